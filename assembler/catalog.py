@@ -1,0 +1,93 @@
+"""Specs -> registered classes: the shipped specs at import, user folders with one call.
+
+Each validated spec becomes a real class, ``type(spec.name, (MorphologyClass,), {...})``, and the
+registry's metaclass registers it on creation, exactly like a hand-written subclass.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from pathlib import Path
+
+from assembler.errors import Problem, RegistryError, SpecError
+from assembler.loader import LoadedSpec, load_paths, load_string
+from assembler.models import MORPHOLOGY_CLASSES, RobotModel
+from assembler.paths import shipped_specs_dir
+from assembler.registry import REGISTERED_ROBOTS, source_of
+from assembler.yaml_source import LocatedDocument
+
+
+def registered_document(name: str) -> LocatedDocument | None:
+    """The merged spec document of a registered spec-made robot, for ``extends: <name>``."""
+    cls = REGISTERED_ROBOTS.get(name)
+    loaded = getattr(cls, "loaded", None)
+    return loaded.document if loaded is not None else None
+
+
+def class_from_spec(loaded: LoadedSpec) -> type[RobotModel]:
+    """Create (and so register) the robot class a spec describes."""
+    spec = loaded.spec
+    if spec.morphology not in MORPHOLOGY_CLASSES:
+        raise SpecError(
+            Problem(
+                f"morphology '{spec.morphology}' is not available yet; use one of "
+                + ", ".join(MORPHOLOGY_CLASSES),
+                loaded.location(("morphology",)),
+                "morphology",
+            )
+        )
+    namespace = {
+        "spec": spec,
+        "loaded": loaded,
+        "__doc__": spec.description or f"Robot '{spec.name}' from {loaded.source}.",
+        "__module__": "assembler.specs",
+    }
+    return type(spec.name, (MORPHOLOGY_CLASSES[spec.morphology],), namespace)
+
+
+def _check_names(batch: list[LoadedSpec]) -> None:
+    problems: list[Problem] = []
+    first: dict[str, LoadedSpec] = {}
+    for loaded in batch:
+        name = loaded.spec.name
+        where = loaded.location(("name",))
+        if name in first and first[name].source != loaded.source:
+            problems.append(
+                Problem(f"robot '{name}' is also defined by {first[name].source}; rename one", where, "name")
+            )
+        first.setdefault(name, loaded)
+        existing = REGISTERED_ROBOTS.get(name)
+        if existing is not None and source_of(existing) != loaded.source:
+            problems.append(
+                Problem(f"robot '{name}' is already registered by {source_of(existing)}; rename one", where, "name")
+            )
+    if problems:
+        raise RegistryError(problems)
+
+
+def register_specs(*paths: str | Path) -> list[type[RobotModel]]:
+    """Validate and register every spec in the given files and folders (all or nothing)."""
+    batch = load_paths(paths, registered_document)
+    _check_names(batch)
+    return [class_from_spec(loaded) for loaded in batch]
+
+
+def register_spec_string(text: str) -> type[RobotModel]:
+    """Validate and register one spec written as YAML text."""
+    loaded = load_string(text, registered_document)
+    _check_names([loaded])
+    return class_from_spec(loaded)
+
+
+def load_shipped_specs() -> list[type[RobotModel]]:
+    """Register the specs this project ships; called once when ``assembler`` is imported."""
+    folder = shipped_specs_dir()
+    return register_specs(folder) if folder.is_dir() else []
+
+
+def add_spec_folders(folders: Iterable[str | Path]) -> list[type[RobotModel]]:
+    """Register the user's spec folders (the CLI's ``--specs`` flag)."""
+    folders = list(folders)
+    return register_specs(*folders) if folders else []
+
+

@@ -1,0 +1,71 @@
+"""Which joint attributes an MJCF file sets, by MuJoCo's own default resolution.
+
+robosuite's rule "apply the default only where the model does not set it" needs to know whether
+a joint's damping (say) comes from the file or from MuJoCo's built-in default. MjSpec reports
+resolved values only, so we ask MuJoCo itself: parse the file a second time with an impossible
+sentinel value in the main default class. A joint that still shows the sentinel inherits from
+nothing the author wrote; any other value was set by the author, literally, through its class,
+a nested class or an ancestor's ``childclass`` - exactly as MuJoCo will compile it.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import mujoco
+
+SENTINEL = -7.251e33
+"""A value no author writes; it marks attributes the file leaves to MuJoCo's built-in default."""
+
+SENSED_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
+
+
+def _joint_value(joint: mujoco.MjsJoint, attribute: str) -> float:
+    value = getattr(joint, attribute)
+    # Since MuJoCo 3.7 damping and stiffness are polynomial coefficient arrays; [0] is the XML value.
+    return float(value[0]) if hasattr(value, "__len__") else float(value)
+
+
+def _main_joint_default(root: ET.Element) -> ET.Element:
+    default = root.find("default")
+    if default is None:
+        default = ET.SubElement(root, "default")
+    joint = default.find("joint")
+    if joint is None:
+        joint = ET.SubElement(default, "joint")
+    return joint
+
+
+def authored_attributes(root: ET.Element, spec: mujoco.MjSpec) -> list[dict[str, str]]:
+    """For each joint of ``spec`` (in MjSpec order), the attributes the file sets and how.
+
+    How is one of ``"literal"`` (on the joint element), ``"class '<name>'"`` (through a default
+    class, childclass or nesting) or ``"main default"`` (the file's class-less ``<default>``).
+    ``root`` is the file's parsed XML; it is not modified.
+    """
+    probe_root = ET.fromstring(ET.tostring(root))
+    main_joint = _main_joint_default(probe_root)
+    in_main = {a for a in SENSED_ATTRIBUTES if main_joint.get(a) is not None}
+    for attribute in SENSED_ATTRIBUTES:
+        if attribute not in in_main:
+            main_joint.set(attribute, repr(SENTINEL))
+    probe = mujoco.MjSpec.from_string(ET.tostring(probe_root, encoding="unicode"))
+
+    literal = {
+        element.get("name"): element.attrib
+        for element in root.iter("joint")
+        if element.get("name") and element.get("joint") is None and element.get("joint1") is None
+    }
+    result: list[dict[str, str]] = []
+    for joint, probed in zip(spec.joints, probe.joints, strict=True):
+        own = literal.get(joint.name, {})
+        sets: dict[str, str] = {}
+        for attribute in SENSED_ATTRIBUTES:
+            if attribute in own:
+                sets[attribute] = "literal"
+            elif attribute in in_main:
+                sets[attribute] = "main default"
+            elif _joint_value(probed, attribute) != SENTINEL:
+                sets[attribute] = f"class '{joint.classname.name}'"
+        result.append(sets)
+    return result

@@ -1,0 +1,124 @@
+"""Loading an MJCF file once: a pristine MjSpec with absolute asset paths, plus what we learn from it.
+
+Each robot instance gets a cheap copy of the pristine spec. Asset paths are made absolute (and
+``meshdir``/``texturedir`` cleared) before anything is attached, because ``MjSpec.to_xml`` keeps only
+the outermost model's directories: without this the emitted XML would not load from another
+working directory.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+import mujoco
+
+from assembler.errors import MjcfError
+from assembler.mjcf.authored import authored_attributes
+from assembler.paths import display_path, locate_model_file
+
+GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "statistic")
+"""Model-wide sections a standalone robot keeps from its own file (e.g. its integrator)."""
+
+DIRECTORY_ATTRIBUTES: tuple[str, ...] = ("meshdir", "texturedir", "assetdir")
+
+
+@dataclass(frozen=True)
+class MjcfSource:
+    """One parsed MJCF file: pristine spec, its global sections, and the joints' authored attributes."""
+
+    path: Path
+    pristine: mujoco.MjSpec
+    globals_xml: str
+    authored: tuple[dict[str, str], ...]
+
+    def new_spec(self) -> mujoco.MjSpec:
+        """A fresh, independent copy of the file's spec to attach or edit."""
+        return self.pristine.copy()
+
+    @property
+    def joint_names(self) -> list[str]:
+        """Names of the file's joints in MuJoCo's order, free joints excluded."""
+        return [j.name for j in self.pristine.joints if j.type != mujoco.mjtJoint.mjJNT_FREE]
+
+
+def _asset_file(directory: str, base: Path, file: str) -> str:
+    if not file or os.path.isabs(file):
+        return file
+    return str((base / directory / file).resolve())
+
+
+def _absolutize_assets(spec: mujoco.MjSpec, base: Path) -> list[str]:
+    """Rewrite every asset file path to an absolute one; return those that do not exist."""
+    missing = []
+    mesh_dir, texture_dir = spec.meshdir or "", spec.texturedir or ""
+    groups = [(spec.meshes, mesh_dir), (spec.hfields, mesh_dir), (spec.skins, mesh_dir)]
+    for elements, directory in groups:
+        for element in elements:
+            element.file = _asset_file(directory, base, element.file)
+            if element.file and not os.path.isfile(element.file):
+                missing.append(element.file)
+    for texture in spec.textures:
+        texture.file = _asset_file(texture_dir, base, texture.file)
+        texture.cubefiles = [_asset_file(texture_dir, base, f) for f in texture.cubefiles]
+        for file in [texture.file, *texture.cubefiles]:
+            if file and not os.path.isfile(file):
+                missing.append(file)
+    spec.meshdir = ""
+    spec.texturedir = ""
+    return missing
+
+
+def _globals_xml(root: ET.Element) -> str:
+    skeleton = ET.Element("mujoco", {"model": root.get("model", "robot")})
+    for tag in GLOBAL_SECTIONS:
+        element = root.find(tag)
+        if element is None:
+            continue
+        element = ET.fromstring(ET.tostring(element))
+        for attribute in DIRECTORY_ATTRIBUTES:
+            element.attrib.pop(attribute, None)
+        skeleton.append(element)
+    return ET.tostring(skeleton, encoding="unicode")
+
+
+def _unnamed_joints(spec: mujoco.MjSpec) -> list[str]:
+    return [
+        f"in body '{j.parent.name or '(unnamed)'}'"
+        for j in spec.joints
+        if not j.name and j.type != mujoco.mjtJoint.mjJNT_FREE
+    ]
+
+
+@functools.lru_cache(maxsize=64)
+def _load(path: Path, mtime_ns: int, size: int) -> MjcfSource:
+    shown = display_path(path)
+    try:
+        root = ET.parse(path).getroot()
+        spec = mujoco.MjSpec.from_file(str(path))
+    except ET.ParseError as error:
+        raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
+    except ValueError as error:
+        raise MjcfError(f"{shown}: MuJoCo cannot read it: {str(error).strip()}") from None
+    unnamed = _unnamed_joints(spec)
+    if unnamed:
+        raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
+    missing = _absolutize_assets(spec, path.parent)
+    if missing:
+        raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
+    return MjcfSource(
+        path=path,
+        pristine=spec,
+        globals_xml=_globals_xml(root),
+        authored=tuple(authored_attributes(root, spec)),
+    )
+
+
+def load_mjcf(reference: str) -> MjcfSource:
+    """The parsed MJCF behind a spec's ``mjcf`` reference; re-read only when the file changes."""
+    path = locate_model_file(reference).resolve()
+    stat = path.stat()
+    return _load(path, stat.st_mtime_ns, stat.st_size)
