@@ -53,13 +53,21 @@ def _check_names(batch: list[LoadedSpec]) -> None:
         where = loaded.location(("name",))
         if name in first and first[name].source != loaded.source:
             problems.append(
-                Problem(f"robot '{name}' is also defined by {first[name].source}; rename one", where, "name")
+                Problem(
+                    f"robot '{name}' is also defined by {first[name].source}; rename one",
+                    where,
+                    "name",
+                )
             )
         first.setdefault(name, loaded)
         existing = REGISTERED_ROBOTS.get(name)
         if existing is not None and source_of(existing) != loaded.source:
             problems.append(
-                Problem(f"robot '{name}' is already registered by {source_of(existing)}; rename one", where, "name")
+                Problem(
+                    f"robot '{name}' is already registered by {source_of(existing)}; rename one",
+                    where,
+                    "name",
+                )
             )
     if problems:
         raise RegistryError(problems)
@@ -89,5 +97,3 @@ def add_spec_folders(folders: Iterable[str | Path]) -> list[type[RobotModel]]:
     """Register the user's spec folders (the CLI's ``--specs`` flag)."""
     folders = list(folders)
     return register_specs(*folders) if folders else []
-
-

@@ -21,12 +21,21 @@ from assembler.paths import display_path
 from assembler.registry import REGISTERED_ROBOTS, create_robot
 from assembler.schema import JOINT_RULE_ATTRIBUTES, RobotSpec
 
+
 def _robot(reference: str, idn: int) -> RobotModel:
     """A robot by registered name, or from a spec file given as a path."""
     if reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file():
         (cls, *_) = register_specs(reference)
         return cls(idn=idn)
     return create_robot(reference, idn=idn)
+
+
+def _table(rows: Sequence[Sequence[str]]) -> str:
+    """Rows as left-aligned columns, two spaces apart."""
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+    return "\n".join(
+        "  ".join(cell.ljust(width) for cell, width in zip(row, widths, strict=True)).rstrip() for row in rows
+    )
 
 
 def _dof_text(cls: type[RobotModel]) -> str:
@@ -37,14 +46,12 @@ def _dof_text(cls: type[RobotModel]) -> str:
 
 
 def command_list(args: argparse.Namespace) -> int:
-    rows = [("robot", "morphology", "dof", "spec")]
+    rows: list[tuple[str, ...]] = [("robot", "morphology", "dof", "spec")]
     for name, cls in REGISTERED_ROBOTS.items():
         loaded = cls.loaded
         source = display_path(loaded.document.file) if loaded is not None else cls.__module__
         rows.append((name, cls.spec.morphology, _dof_text(cls), source))
-    widths = [max(len(row[i]) for row in rows) for i in range(3)]
-    for row in rows:
-        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)) + "  " + row[3])
+    print(_table(rows))
     return 0
 
 
@@ -84,7 +91,9 @@ def command_inspect(args: argparse.Namespace) -> int:
     robot = _robot(args.robot, args.idn)
     if args.format == "json":
         table = {
-            robot.naming_prefix + joint: {a: {"value": v.value, "source": v.source} for a, v in values.items()}
+            robot.naming_prefix + joint: {
+                a: {"value": v.value, "source": v.source} for a, v in values.items()
+            }
             for joint, values in robot.joint_values.items()
         }
         print(json.dumps({"robot": type(robot).__name__, "dof": robot.dof, "joints": table}, indent=2))
@@ -104,9 +113,7 @@ def command_inspect(args: argparse.Namespace) -> int:
             value = values.get(attribute)
             cells.append(f"{value.value:.6g}  {value.source}" if value else "-  (MuJoCo default)")
         rows.append(cells)
-    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
-    for row in rows:
-        print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip())
+    print(_table(rows))
     return 0
 
 

@@ -81,11 +81,7 @@ def _resolve_paths(document: LocatedDocument, base_dir: Path | None) -> None:
 def _merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
     """The child's fields over the parent's: mappings merge key by key, anything else replaces."""
     data = copy.deepcopy({k: v for k, v in parent.data.items() if k not in NOT_INHERITED})
-    marks = {
-        path: mark
-        for path, mark in parent.marks.items()
-        if not path or path[0] not in NOT_INHERITED
-    }
+    marks = {path: mark for path, mark in parent.marks.items() if not path or path[0] not in NOT_INHERITED}
 
     def overlay(target: dict[str, Any], source: dict[str, Any], prefix: DataPath) -> None:
         for key, value in source.items():
@@ -132,17 +128,19 @@ class _Resolver:
         key = _inheritance_key(reference, document)
         own = str(document.data.get("name") or document.file)
         if key in chain or key == own:
-            members = [*chain[chain.index(key):], own] if key in chain else [own]
+            members = [*chain[chain.index(key) :], own] if key in chain else [own]
             start = members.index(min(members))  # one spelling per cycle, whichever file finds it
             members = members[start:] + members[:start]
             cycle = " -> ".join([*members, members[0]])
             raise SpecError(Problem(f"inheritance cycle: {cycle}; break it", where, "extends"))
-        parent = self._find_parent(reference, key, where)
+        parent = self._find_parent(reference, key, where, document)
         merged = _merge(self.resolve(parent, (*chain, own)), document)
         self.done[id(document)] = merged
         return merged
 
-    def _find_parent(self, reference: str, key: str, where: Location) -> LocatedDocument:
+    def _find_parent(
+        self, reference: str, key: str, where: Location, child: LocatedDocument
+    ) -> LocatedDocument:
         if key != reference:  # a file
             path = Path(key)
             if not path.is_file():
@@ -156,7 +154,7 @@ class _Resolver:
         if found is None:
             from assembler.registry import registered_robot_names
 
-            known = sorted({*self.batch, *registered_robot_names()})
+            known = sorted({*self.batch, *registered_robot_names()} - {child.data.get("name")})
             raise SpecError(
                 Problem(
                     f"unknown robot '{reference}'.{did_you_mean(reference, known)} "
@@ -241,7 +239,14 @@ def _problems(error: ValidationError, loaded: LoadedSpec | LocatedDocument) -> l
         count = len(given) if isinstance(given, list) else 0
         where = document.marks.get((*path, "<value>")) or document.location(path)
         problems.append(Problem(f"expected {expected} values, got {count}", where, dotted(path)))
-    return problems
+    return sorted(problems, key=_reading_order)
+
+
+def _reading_order(problem: Problem) -> tuple[str, int, int]:
+    where = problem.location
+    if where is None:
+        return ("", 0, 0)
+    return (where.file, where.line or 0, where.column or 0)
 
 
 def _value_at(data: Any, path: DataPath) -> Any:

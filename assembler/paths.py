@@ -76,9 +76,7 @@ def locate_model_file(reference: str) -> Path:
         root = package_root(package)
         if root is None:
             extra = ' (pip install "robot-assembler[robosuite]")' if package == "robosuite" else ""
-            raise MjcfError(
-                f"{reference}: Python package '{package}' is not installed; install it{extra}"
-            )
+            raise MjcfError(f"{reference}: Python package '{package}' is not installed; install it{extra}")
         path = root / inner
     else:
         path = Path(reference)

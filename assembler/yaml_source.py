@@ -94,10 +94,11 @@ class _Builder:
                 continue
             first_seen[key] = here
             # A key's own position is what an "unknown key" error should point at.
-            self.marks[(*path, key)] = here
-            result[key] = self.build(value_node, (*path, key))
+            key_path: DataPath = (*path, key)
+            self.marks[key_path] = here
+            result[key] = self.build(value_node, key_path)
             if not isinstance(value_node, yaml.ScalarNode) or value_node.value:
-                self.marks[(*path, key, "<value>")] = _location(self.file, value_node)
+                self.marks[key_path + ("<value>",)] = _location(self.file, value_node)
         self.marks.pop((*path, "<key>"), None)
         return result
 
@@ -119,9 +120,7 @@ def parse_yaml(text: str, file: str) -> LocatedDocument:
     if node is None:
         raise SpecError(Problem("the file is empty; a spec is a YAML mapping", Location(file, 1, 1)))
     if not isinstance(node, yaml.MappingNode):
-        raise SpecError(
-            Problem("a spec must be a YAML mapping (key: value lines)", _location(file, node))
-        )
+        raise SpecError(Problem("a spec must be a YAML mapping (key: value lines)", _location(file, node)))
     builder = _Builder(file)
     try:
         data = builder.build(node, ())

@@ -26,7 +26,7 @@ def root_body_name(source: MjcfSource) -> str:
         )
     if not roots[0]:
         raise MjcfError(f"{display_path(source.path)}: the root body needs a name")
-    return roots[0]
+    return str(roots[0])
 
 
 def prefixed_spec(source: MjcfSource, prefix: str) -> mujoco.MjSpec:

@@ -6,13 +6,60 @@ file is written to a temporary file in the target folder and moved into place wi
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
+import functools
 import hashlib
 import os
 import shutil
 import tempfile
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
 from pathlib import Path
 
 import mujoco
+
+XML_SIGNIFICANT_DIGITS = 15
+"""Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""
+
+
+@functools.lru_cache(maxsize=1)
+def _mujoco_library() -> ctypes.CDLL | None:
+    folder = Path(mujoco.__file__).parent
+    for pattern in ("libmujoco.so*", "libmujoco*.dylib", "mujoco.dll"):
+        for candidate in sorted(folder.glob(pattern)):
+            with contextlib.suppress(OSError):
+                return ctypes.CDLL(str(candidate))
+    return None
+
+
+@contextlib.contextmanager
+def _xml_precision(digits: int) -> Iterator[None]:
+    """Make MuJoCo's XML writer print ``digits`` significant digits instead of its default 6.
+
+    With 6 digits, armature 5/3 is saved as 1.66667 and the reloaded model differs from the
+    compiled one by 2e-6. MuJoCo exports the switch its own tests use (``FullFloatPrecision`` in
+    src/xml/xml_numeric_format.h); when a MuJoCo build lacks it we fall back to the default.
+    """
+    library = _mujoco_library()
+    setter = getattr(library, "_mjPRIVATE__set_xml_precision", None) if library else None
+    getter = getattr(library, "_mjPRIVATE__get_xml_precision", None) if library else None
+    if setter is None or getter is None:
+        yield
+        return
+    getter.restype = ctypes.c_int
+    previous = getter()
+    setter(ctypes.c_int(digits))
+    try:
+        yield
+    finally:
+        setter(ctypes.c_int(previous))
+
+
+def to_xml(spec: mujoco.MjSpec) -> str:
+    """The spec as MJCF text, with numbers precise enough to reload the same model."""
+    with _xml_precision(XML_SIGNIFICANT_DIGITS):
+        return str(spec.to_xml())
 
 
 def write_atomically(path: Path, content: str | bytes) -> None:
@@ -46,42 +93,51 @@ def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+FILE_ATTRIBUTES: tuple[str, ...] = (
+    "file",
+    "fileright",
+    "fileleft",
+    "fileup",
+    "filedown",
+    "filefront",
+    "fileback",
+)
+"""Attributes of MJCF asset elements that name a file (cube textures have six)."""
+
+
 def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
     """Write ``directory/xml_name`` and copies of every asset file under ``directory/assets``.
 
     Asset paths in the XML become relative, so the folder can be moved or zipped. Two different
-    files with one base name get distinct names (``link.stl``, ``link_1.stl``).
+    files with one base name get distinct names (``link.stl``, ``link_1.stl``). The paths are
+    rewritten in the emitted text: MjSpec would try to open relative paths from the source folder.
     """
-    bundled = spec.copy()
+    root = ET.fromstring(to_xml(spec))
     assets = directory / "assets"
     assets.mkdir(parents=True, exist_ok=True)
     placed: dict[str, str] = {}  # absolute source -> relative target
     taken: dict[str, str] = {}  # target name -> content digest
 
     def place(file: str) -> str:
-        if not file:
-            return file
         if file in placed:
             return placed[file]
         source = Path(file)
         digest = _digest(source)
-        stem, suffix, n = source.stem, source.suffix, 0
-        name = source.name
+        name, n = source.name, 0
         while name in taken and taken[name] != digest:
             n += 1
-            name = f"{stem}_{n}{suffix}"
+            name = f"{source.stem}_{n}{source.suffix}"
         if name not in taken:
             _copy_atomically(source, assets / name)
             taken[name] = digest
         placed[file] = f"assets/{name}"
         return placed[file]
 
-    for elements in (bundled.meshes, bundled.hfields, bundled.skins):
-        for element in elements:
-            element.file = place(element.file)
-    for texture in bundled.textures:
-        texture.file = place(texture.file)
-        texture.cubefiles = [place(f) for f in texture.cubefiles]
+    for section in root.iter("asset"):
+        for element in section:
+            for attribute in FILE_ATTRIBUTES:
+                if element.get(attribute):
+                    element.set(attribute, place(element.get(attribute, "")))
     target = directory / xml_name
-    write_atomically(target, bundled.to_xml())
+    write_atomically(target, ET.tostring(root, encoding="unicode") + "\n")
     return target

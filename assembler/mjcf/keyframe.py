@@ -12,10 +12,13 @@ from collections.abc import Mapping
 
 import mujoco
 import numpy as np
+from numpy.typing import NDArray
 
 from assembler.errors import MjcfError
 
 HOME_KEY = "home"
+
+FloatArray = NDArray[np.float64]
 
 
 def _home_key(spec: mujoco.MjSpec) -> mujoco.MjsKey:
@@ -36,7 +39,7 @@ def _holds_position(model: mujoco.MjModel, actuator: int) -> bool:
     return bool(on_joint and kp > 0 and np.isclose(model.actuator_biasprm[actuator, 1], -kp))
 
 
-def home_control(model: mujoco.MjModel, qpos: np.ndarray) -> np.ndarray:
+def home_control(model: mujoco.MjModel, qpos: FloatArray) -> FloatArray:
     """Controls that hold ``qpos``: position targets for position actuators, zero for the rest."""
     ctrl = np.zeros(model.nu)
     for actuator in range(model.nu):
@@ -55,7 +58,7 @@ def compile_with_home(spec: mujoco.MjSpec, home: Mapping[str, float], what: str)
     try:
         model = spec.compile()
     except ValueError as error:
-        message = " ".join(str(error).split())
+        message = " ".join(str(error).split()).removeprefix("Error: ")
         raise MjcfError(f"{what}: MuJoCo cannot compile the assembly: {message}") from None
     index = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
     qpos = model.qpos0.copy()

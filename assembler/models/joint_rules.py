@@ -36,9 +36,7 @@ JointTable = dict[str, dict[str, JointValue]]
 Locator = Callable[[DataPath], Location]
 
 
-def _rule_values(
-    attribute: str, rule: object, count: int, locate: Locator
-) -> tuple[list[float], str] | None:
+def _rule_values(attribute: str, rule: object, count: int, locate: Locator) -> tuple[list[float], str] | None:
     if rule is None:
         return None
     if isinstance(rule, InverseIndexRule):
@@ -48,7 +46,11 @@ def _rule_values(
         if len(rule) != count:
             path = ("joint_defaults", attribute)
             raise SpecError(
-                Problem(f"expected {count} values (one per joint), got {len(rule)}", locate(path), dotted(path))
+                Problem(
+                    f"expected {count} values (one per joint), got {len(rule)}",
+                    locate(path),
+                    dotted(path),
+                )
             )
         return [float(v) for v in rule], "rule (list)"
     return [float(rule)] * count, f"rule {float(rule):g}"  # type: ignore[arg-type]

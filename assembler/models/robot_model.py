@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import mujoco
 import numpy as np
+from numpy.typing import NDArray
 
 from assembler.errors import (
     AssemblerError,
@@ -25,9 +26,15 @@ from assembler.errors import (
     summarize_names,
 )
 from assembler.mjcf.assembly import prefixed_spec, root_body_name
+from assembler.mjcf.emit import to_xml, write_atomically
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
-from assembler.models.joint_rules import JointTable, JointValue, apply_default_rules, apply_overrides
+from assembler.models.joint_rules import (
+    JointTable,
+    JointValue,
+    apply_default_rules,
+    apply_overrides,
+)
 from assembler.registry import RobotModelMeta
 from assembler.schema import RobotSpec
 from assembler.yaml_source import DataPath
@@ -44,6 +51,8 @@ SETTABLE_JOINT_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armatu
 COLLISION_GROUP = 0
 VISUAL_GROUP = 1
 
+FloatArray = NDArray[np.float64]
+
 
 def _joint_attribute(joint: mujoco.MjsJoint, attribute: str) -> float:
     value = getattr(joint, attribute)
@@ -59,7 +68,7 @@ def _set_joint_attribute(joint: mujoco.MjsJoint, attribute: str, value: float) -
         setattr(joint, attribute, value)
 
 
-def _euler_to_quat(rpy: np.ndarray) -> np.ndarray:
+def _euler_to_quat(rpy: FloatArray) -> FloatArray:
     """(w, x, y, z) of the rotation Rz(yaw) Ry(pitch) Rx(roll), robosuite's ``set_base_ori`` convention."""
     quat = np.zeros(4)
     mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "XYZ")
@@ -106,10 +115,10 @@ class RobotModel(metaclass=RobotModelMeta):
     def _resolve_joint_values(self) -> JointTable:
         names = self.source.joint_names
         joints = [self.mjspec.joint(self.naming_prefix + n) for n in names]
-        in_file = [
-            {a: _joint_attribute(j, a) for a in SETTABLE_JOINT_ATTRIBUTES} for j in joints
-        ]
-        authored_by_name = dict(zip((j.name for j in self.source.pristine.joints), self.source.authored))
+        in_file = [{a: _joint_attribute(j, a) for a in SETTABLE_JOINT_ATTRIBUTES} for j in joints]
+        authored_by_name = dict(
+            zip((j.name for j in self.source.pristine.joints), self.source.authored, strict=True)
+        )
         authored = [authored_by_name[n] for n in names]
         table = apply_default_rules(names, in_file, authored, self.spec.joint_defaults, self._locate)
         apply_overrides(table, names, self.spec.joints, self._locate)
@@ -247,7 +256,7 @@ class RobotModel(metaclass=RobotModelMeta):
         return dict(self.spec.default_controller_config)
 
     @property
-    def init_qpos(self) -> np.ndarray:
+    def init_qpos(self) -> FloatArray:
         """Initial joint positions, one per robot joint (the MJCF's qpos0 when the spec gives none)."""
         if self.spec.init_qpos is not None:
             return np.array(self.spec.init_qpos, dtype=float)
@@ -255,16 +264,16 @@ class RobotModel(metaclass=RobotModelMeta):
         return np.array(refs, dtype=float)
 
     @property
-    def base_xpos_offset(self) -> dict[str, Callable[..., np.ndarray]]:
+    def base_xpos_offset(self) -> dict[str, Callable[..., FloatArray]]:
         """Per arena, a function of the arena's variables (``table_length=...``) giving the offset."""
 
-        def offset(arena: str) -> Callable[..., np.ndarray]:
+        def offset(arena: str) -> Callable[..., FloatArray]:
             return lambda **variables: np.array(self.spec.resolve_base_xpos_offset(arena, **variables))
 
         return {arena: offset(arena) for arena in self.spec.base_xpos_offset}
 
     @property
-    def top_offset(self) -> np.ndarray:
+    def top_offset(self) -> FloatArray:
         """Offset from the robot's root to its top (metres)."""
         return np.array(self.spec.top_offset, dtype=float)
 
@@ -280,34 +289,36 @@ class RobotModel(metaclass=RobotModelMeta):
         return max(self._horizontal_radius, float(self.base.horizontal_radius))
 
     @property
-    def base_offset(self) -> np.ndarray:
+    def base_offset(self) -> FloatArray:
         """The root body's position as the MJCF writes it (robosuite's ``_base_offset``)."""
         return np.array(self.source.pristine.body(self._root_name).pos, dtype=float)
 
     @property
-    def bottom_offset(self) -> np.ndarray:
+    def bottom_offset(self) -> FloatArray:
         """Vector from the root body to the bottom of the robot (and of its base, when it has one)."""
         if self.base is None:
             return self.base_offset
-        return np.asarray(self.base.bottom_offset) - np.asarray(self.base.top_offset) + self.base_offset
+        base_bottom: FloatArray = np.asarray(self.base.bottom_offset, dtype=float)
+        base_top: FloatArray = np.asarray(self.base.top_offset, dtype=float)
+        return base_bottom - base_top + self.base_offset
 
     # ----- placement and joints -----------------------------------------------------------
 
-    def set_base_xpos(self, pos: np.ndarray) -> None:
+    def set_base_xpos(self, pos: FloatArray) -> None:
         """Place the robot so that its bottom is at ``pos`` (x, y, z in metres)."""
         position = np.asarray(pos, dtype=float)
         if position.shape != (3,) or not np.all(np.isfinite(position)):
             raise AssemblerError(f"set_base_xpos: expected 3 finite numbers, got {pos!r}")
         self.mjspec.body(self.root_body).pos = position - self.bottom_offset
 
-    def set_base_ori(self, rot: np.ndarray) -> None:
+    def set_base_ori(self, rot: FloatArray) -> None:
         """Orient the robot by (roll, pitch, yaw) in radians, rotating about fixed x, y, z axes."""
         angles = np.asarray(rot, dtype=float)
         if angles.shape != (3,) or not np.all(np.isfinite(angles)):
             raise AssemblerError(f"set_base_ori: expected 3 finite angles, got {rot!r}")
         self.mjspec.body(self.root_body).quat = _euler_to_quat(angles)
 
-    def set_joint_attribute(self, attrib: str, values: np.ndarray, force: bool = True) -> None:
+    def set_joint_attribute(self, attrib: str, values: FloatArray, force: bool = True) -> None:
         """Set ``attrib`` on each robot joint; with ``force=False`` only where no value is set yet.
 
         As in robosuite, the rules have already given frictionloss, damping and armature to every
@@ -356,12 +367,10 @@ class RobotModel(metaclass=RobotModelMeta):
     def get_xml(self) -> str:
         """The assembly as one standalone MJCF document (compiled once first, so it is valid)."""
         self.get_model()
-        return self.mjspec.to_xml()
+        return to_xml(self.mjspec)
 
     def save(self, path: str | Path) -> Path:
         """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""
-        from assembler.mjcf.emit import write_atomically
-
         target = Path(path)
         write_atomically(target, self.get_xml())
         return target

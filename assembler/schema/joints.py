@@ -12,7 +12,7 @@ from typing import Annotated, Any
 from pydantic import Field, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError
 
-from assembler.schema.base import FiniteFloat, NonNegativeFloat, StrictModel
+from assembler.schema.base import NonNegativeFloat, StrictModel
 
 JOINT_RULE_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature")
 """The joint attributes that have a default rule, in the order robosuite applies them."""
@@ -88,15 +88,10 @@ class JointOverride(StrictModel):
     def _sets_something(self) -> JointOverride:
         if all(getattr(self, name) is None for name in OVERRIDABLE_ATTRIBUTES):
             raise ValueError(
-                f"override for {self.match!r} sets nothing; give one of "
-                + ", ".join(OVERRIDABLE_ATTRIBUTES)
+                f"override for {self.match!r} sets nothing; give one of " + ", ".join(OVERRIDABLE_ATTRIBUTES)
             )
         return self
 
     def values(self) -> dict[str, float]:
         """The attributes this override sets, by name."""
-        return {
-            name: value
-            for name in OVERRIDABLE_ATTRIBUTES
-            if (value := getattr(self, name)) is not None
-        }
+        return {name: value for name in OVERRIDABLE_ATTRIBUTES if (value := getattr(self, name)) is not None}

@@ -1,0 +1,130 @@
+"""The command line: each command's output and exit code, errors as lines without tracebacks."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import mujoco
+import pytest
+
+from assembler.cli import main
+from assembler.paths import shipped_specs_dir
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main(list(argv))
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def test_list_shows_robots_with_morphology_and_dof(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "list")
+    assert code == 0
+    rows = {line.split()[0]: line.split() for line in out.splitlines()[1:]}
+    assert rows["Sparrow7"][1:3] == ["manipulator", "7"]
+    assert rows["Finch6"][1:3] == ["manipulator", "6"]
+
+
+def test_validate_shipped_specs_exits_zero(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(capsys, "validate", str(shipped_specs_dir()))
+    assert (code, err) == (0, "")
+    assert "Sparrow7" in out
+
+
+def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureFixture[str], write) -> None:  # type: ignore[no-untyped-def]
+    folder = write("specs/a.yaml", "name: A\nmjcf: a.xml\ndampng: 1\n").parent
+    write("specs/b.yaml", "name: B\n")
+    code, out, err = run(capsys, "validate", str(folder))
+    assert code == 1 and out == ""
+    lines = err.splitlines()
+    assert len(lines) == 2
+    assert lines[0].endswith(
+        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: kind, name, extends, description, mjcf, morphology, default_base, default_controller_config, init_qpos, base_xpos_offset, top_offset, horizontal_radius, joint_defaults, joints"
+    )
+    assert lines[1].endswith("b.yaml:1:1: missing required field 'mjcf'; add it")
+    assert "Traceback" not in err
+
+
+def test_validate_checks_specs_against_their_mjcf(capsys: pytest.CaptureFixture[str], two_link: Path) -> None:
+    two_link.write_text("name: TwoLink\nmjcf: twolink.xml\njoints:\n  - {match: joint9, damping: 1}\n")
+    code, _, err = run(capsys, "validate", str(two_link))
+    assert code == 1
+    assert err.strip().endswith(
+        "twolink.yaml:4:13: joints[0].match: no joint matches 'joint9'. Joints: shoulder, elbow"
+    )
+
+
+def test_build_writes_a_compiled_standalone_model(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    out = tmp_path / "robot.xml"
+    code, _, err = run(capsys, "build", "Sparrow7", "--idn", "2", "-o", str(out))
+    assert code == 0 and "wrote" in err
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert model.joint(0).name == "robot2_joint1" and model.nkey == 1
+
+
+def test_build_with_bundle(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code, _, _ = run(capsys, "build", "Finch6", "--bundle", str(tmp_path / "b"))
+    assert code == 0
+    assert mujoco.MjModel.from_xml_path(str(tmp_path / "b" / "Finch6.xml")).nu == 6
+
+
+def test_build_accepts_a_spec_file_and_user_spec_folders(
+    capsys: pytest.CaptureFixture[str], two_link: Path
+) -> None:
+    code, out, _ = run(capsys, "build", str(two_link))
+    assert code == 0 and out.startswith("<mujoco")
+    code, out, _ = run(capsys, "--specs", str(two_link.parent), "build", "TwoLink")
+    assert code == 0 and "robot0_shoulder" in out
+
+
+def test_unknown_robot_is_one_line_with_a_suggestion(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(capsys, "build", "Sparow7")
+    assert (code, out) == (1, "")
+    assert err.startswith("unknown robot 'Sparow7'. Did you mean 'Sparrow7'? Registered robots: ")
+    assert len(err.splitlines()) == 1
+
+
+def test_inspect_shows_each_value_and_its_source(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "inspect", "Sparrow7")
+    assert code == 0
+    rows = {line.split()[0]: line for line in out.splitlines() if line.startswith("robot0_")}
+    assert rows["robot0_joint1"].split() == [
+        "robot0_joint1",
+        "0.1",
+        "rule",
+        "0.1",
+        "0.1",
+        "rule",
+        "0.1",
+        "5",
+        "rule",
+        "5/(i+1)",
+    ]
+    assert "0.01  mjcf (class 'wrist')" in rows["robot0_joint7"]
+    assert "0.714286  rule 5/(i+1)" in rows["robot0_joint7"]
+
+
+def test_inspect_json(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "inspect", "Finch6", "--format", "json")
+    table = json.loads(out)["joints"]
+    assert table["robot0_joint6"]["armature"] == {
+        "value": pytest.approx(5 / 6),
+        "source": "rule 5/(i+1)",
+    }
+
+
+def test_schema_is_json_schema_with_every_field_documented(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code, out, _ = run(capsys, "schema")
+    schema = json.loads(out)
+    assert code == 0 and schema["$schema"].startswith("https://json-schema.org/")
+    assert schema["additionalProperties"] is False
+    assert schema["required"] == ["name", "mjcf"]
+    undocumented = [name for name, field in schema["properties"].items() if not field.get("description")]
+    for definition in schema["$defs"].values():
+        undocumented += [
+            name for name, field in definition.get("properties", {}).items() if not field.get("description")
+        ]
+    assert undocumented == []
