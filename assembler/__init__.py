@@ -5,6 +5,7 @@
 >>> model = robot.get_model()
 """
 
+from assembler.assembly import assemble
 from assembler.catalog import (
     add_spec_folders,
     class_from_spec,
@@ -21,20 +22,53 @@ from assembler.errors import (
     SpecError,
 )
 from assembler.loader import LoadedSpec, load_paths, load_string
-from assembler.models import ManipulatorModel, RobotModel
+from assembler.models import (
+    GripperModel,
+    HumanoidModel,
+    HumanoidUpperBodyModel,
+    LeggedManipulatorModel,
+    ManipulatorModel,
+    RobotBaseModel,
+    RobotModel,
+)
 from assembler.registry import (
+    REGISTERED_BASES,
+    REGISTERED_GRIPPERS,
     REGISTERED_ROBOTS,
     RobotModelMeta,
+    create_base,
+    create_gripper,
     create_robot,
+    register_base,
+    register_gripper,
     register_robot,
     registered_robot_names,
 )
-from assembler.schema import RobotSpec
+from assembler.scene import Scene, build_scene, load_scene
+from assembler.schema import BaseSpec, GripperSpec, RobotSpec, SceneSpec
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "REGISTERED_BASES",
+    "REGISTERED_GRIPPERS",
     "REGISTERED_ROBOTS",
+    "BaseSpec",
+    "GripperModel",
+    "GripperSpec",
+    "HumanoidModel",
+    "HumanoidUpperBodyModel",
+    "LeggedManipulatorModel",
+    "RobotBaseModel",
+    "Scene",
+    "SceneSpec",
+    "assemble",
+    "build_scene",
+    "create_base",
+    "create_gripper",
+    "load_scene",
+    "register_base",
+    "register_gripper",
     "AssemblerError",
     "JointAttributeError",
     "LoadedSpec",

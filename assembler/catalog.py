@@ -9,40 +9,44 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from assembler.errors import Problem, RegistryError, SpecError
+from assembler.errors import Problem, RegistryError
 from assembler.loader import LoadedSpec, load_paths, load_string
-from assembler.models import MORPHOLOGY_CLASSES, RobotModel
+from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, PartModel
 from assembler.paths import shipped_specs_dir
-from assembler.registry import REGISTERED_ROBOTS, source_of
+from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS, source_of
+from assembler.schema import RobotSpec
 from assembler.yaml_source import LocatedDocument
+
+TABLES = {"robot": REGISTERED_ROBOTS, "base": REGISTERED_BASES, "gripper": REGISTERED_GRIPPERS}
+
+
+def kind_of(loaded: LoadedSpec) -> str:
+    """robot, base or gripper."""
+    return str(getattr(loaded.spec, "kind", "robot"))
 
 
 def registered_document(name: str) -> LocatedDocument | None:
-    """The merged spec document of a registered spec-made robot, for ``extends: <name>``."""
-    cls = REGISTERED_ROBOTS.get(name)
-    loaded = getattr(cls, "loaded", None)
-    return loaded.document if loaded is not None else None
+    """The merged spec document of a registered spec-made part, for ``extends: <name>``."""
+    for table in TABLES.values():
+        loaded = getattr(table.get(name), "loaded", None)
+        if loaded is not None:
+            return loaded.document  # type: ignore[no-any-return]
+    return None
 
 
-def class_from_spec(loaded: LoadedSpec) -> type[RobotModel]:
-    """Create (and so register) the robot class a spec describes."""
+def class_from_spec(loaded: LoadedSpec) -> type[PartModel]:
+    """Create (and so register) the class a spec describes."""
     spec = loaded.spec
-    if spec.morphology not in MORPHOLOGY_CLASSES:
-        raise SpecError(
-            Problem(
-                f"morphology '{spec.morphology}' is not available yet; use one of "
-                + ", ".join(MORPHOLOGY_CLASSES),
-                loaded.location(("morphology",)),
-                "morphology",
-            )
-        )
+    parent = (
+        MORPHOLOGY_CLASSES[spec.morphology] if isinstance(spec, RobotSpec) else KIND_CLASSES[kind_of(loaded)]
+    )
     namespace = {
         "spec": spec,
         "loaded": loaded,
-        "__doc__": spec.description or f"Robot '{spec.name}' from {loaded.source}.",
+        "__doc__": spec.description or f"{kind_of(loaded).title()} '{spec.name}' from {loaded.source}.",
         "__module__": "assembler.specs",
     }
-    return type(spec.name, (MORPHOLOGY_CLASSES[spec.morphology],), namespace)
+    return type(spec.name, (parent,), namespace)
 
 
 def _check_names(batch: list[LoadedSpec]) -> None:
@@ -73,27 +77,27 @@ def _check_names(batch: list[LoadedSpec]) -> None:
         raise RegistryError(problems)
 
 
-def register_specs(*paths: str | Path) -> list[type[RobotModel]]:
+def register_specs(*paths: str | Path) -> list[type[PartModel]]:
     """Validate and register every spec in the given files and folders (all or nothing)."""
     batch = load_paths(paths, registered_document)
     _check_names(batch)
     return [class_from_spec(loaded) for loaded in batch]
 
 
-def register_spec_string(text: str) -> type[RobotModel]:
+def register_spec_string(text: str) -> type[PartModel]:
     """Validate and register one spec written as YAML text."""
     loaded = load_string(text, registered_document)
     _check_names([loaded])
     return class_from_spec(loaded)
 
 
-def load_shipped_specs() -> list[type[RobotModel]]:
+def load_shipped_specs() -> list[type[PartModel]]:
     """Register the specs this project ships; called once when ``assembler`` is imported."""
     folder = shipped_specs_dir()
     return register_specs(folder) if folder.is_dir() else []
 
 
-def add_spec_folders(folders: Iterable[str | Path]) -> list[type[RobotModel]]:
+def add_spec_folders(folders: Iterable[str | Path]) -> list[type[PartModel]]:
     """Register the user's spec folders (the CLI's ``--specs`` flag)."""
     folders = list(folders)
     return register_specs(*folders) if folders else []

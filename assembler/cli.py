@@ -15,19 +15,53 @@ from pathlib import Path
 from assembler.catalog import add_spec_folders, register_specs
 from assembler.errors import AssemblerError, Problem
 from assembler.loader import SPEC_SUFFIXES
-from assembler.mjcf.emit import bundle
-from assembler.models import RobotModel
+from assembler.assembly import DEFAULT, assemble
+from assembler.mjcf.emit import bundle, to_xml, write_atomically
+from assembler.models import PartModel, RobotModel
 from assembler.paths import display_path
-from assembler.registry import REGISTERED_ROBOTS, create_robot
+from assembler.registry import (
+    REGISTERED_BASES,
+    REGISTERED_GRIPPERS,
+    REGISTERED_ROBOTS,
+    create_robot,
+    robot_class,
+)
+from assembler.scene import load_scene
 from assembler.schema import JOINT_RULE_ATTRIBUTES, RobotSpec
 
 
-def _robot(reference: str, idn: int) -> RobotModel:
-    """A robot by registered name, or from a spec file given as a path."""
+def _robot_name(reference: str) -> str:
+    """A registered robot name, registering the spec first when given a spec file path."""
     if reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file():
         (cls, *_) = register_specs(reference)
-        return cls(idn=idn)
-    return create_robot(reference, idn=idn)
+        return cls.__name__
+    return reference
+
+
+def _robot(reference: str, idn: int) -> RobotModel:
+    """A robot alone (no base, no grippers), by registered name or spec file."""
+    return create_robot(_robot_name(reference), idn=idn)
+
+
+def _gripper_choices(values: list[str]) -> dict[str, str | None]:
+    choices: dict[str, str | None] = {}
+    for value in values:
+        arm, sep, name = value.partition("=")
+        if not sep or not arm or not name:
+            raise AssemblerError(f"--gripper expects ARM=NAME (e.g. right=PincerGripper or left=none), got '{value}'")
+        choices[arm] = None if name.lower() == "none" else name
+    return choices
+
+
+def _assembled(args: argparse.Namespace) -> RobotModel:
+    """The robot of ``build``: with its default base and grippers unless the flags say otherwise."""
+    name = _robot_name(args.robot)
+    base = None if args.no_base else (args.base or DEFAULT)
+    grippers = _gripper_choices(args.gripper)
+    if args.no_grippers:
+        arms = getattr(robot_class(name).spec, "arms", ())
+        grippers = {arm: None for arm in arms}
+    return assemble(name, idn=args.idn, base=base, grippers=grippers)
 
 
 def _table(rows: Sequence[Sequence[str]]) -> str:
@@ -38,19 +72,31 @@ def _table(rows: Sequence[Sequence[str]]) -> str:
     )
 
 
-def _dof_text(cls: type[RobotModel]) -> str:
+def _dof_text(cls: type[PartModel]) -> str:
     try:
-        return str(cls(idn=0).dof)
+        return str(cls(idn=0).dof_joints)
     except AssemblerError as error:
         return f"? ({error.problems[0].message})"
 
 
+def _source(cls: type[PartModel]) -> str:
+    loaded = cls.loaded
+    return display_path(loaded.document.file) if loaded is not None else cls.__module__
+
+
 def command_list(args: argparse.Namespace) -> int:
-    rows: list[tuple[str, ...]] = [("robot", "morphology", "dof", "spec")]
-    for name, cls in REGISTERED_ROBOTS.items():
-        loaded = cls.loaded
-        source = display_path(loaded.document.file) if loaded is not None else cls.__module__
-        rows.append((name, cls.spec.morphology, _dof_text(cls), source))
+    if args.what == "bases":
+        rows: list[tuple[str, ...]] = [("base", "type", "joints", "spec")]
+        for name, base in REGISTERED_BASES.items():
+            rows.append((name, base.spec.type, _dof_text(base), _source(base)))
+    elif args.what == "grippers":
+        rows = [("gripper", "joints", "spec")]
+        for name, gripper in REGISTERED_GRIPPERS.items():
+            rows.append((name, _dof_text(gripper), _source(gripper)))
+    else:
+        rows = [("robot", "morphology", "dof", "spec")]
+        for name, robot in REGISTERED_ROBOTS.items():
+            rows.append((name, robot.spec.morphology, _dof_text(robot), _source(robot)))
     print(_table(rows))
     return 0
 
@@ -73,7 +119,7 @@ def command_validate(args: argparse.Namespace) -> int:
 
 
 def command_build(args: argparse.Namespace) -> int:
-    robot = _robot(args.robot, args.idn)
+    robot = _assembled(args)
     if args.bundle:
         name = Path(args.output).name if args.output else f"{type(robot).__name__}.xml"
         robot.get_model()  # compile first: a robot that does not compile writes nothing
@@ -123,6 +169,19 @@ def robot_spec_json_schema() -> dict[str, object]:
     return {"$schema": "https://json-schema.org/draft/2020-12/schema", **schema}
 
 
+def command_scene(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    scene.get_model()  # compile first: a scene that does not compile writes nothing
+    xml = to_xml(scene.mjspec)
+    if args.output:
+        write_atomically(Path(args.output), xml)
+        names = ", ".join(robot.name for robot in scene.robots)
+        print(f"wrote {display_path(args.output)} ({names})", file=sys.stderr)
+    else:
+        sys.stdout.write(xml)
+    return 0
+
+
 def command_schema(args: argparse.Namespace) -> int:
     print(json.dumps(robot_spec_json_schema(), indent=2))
     return 0
@@ -141,7 +200,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     commands = parser.add_subparsers(dest="command", required=True)
 
-    listing = commands.add_parser("list", help="registered robots with morphology and dof")
+    listing = commands.add_parser("list", help="registered robots (or bases, grippers)")
+    listing.add_argument("what", nargs="?", choices=("robots", "bases", "grippers"), default="robots")
     listing.set_defaults(run=command_list)
 
     validate = commands.add_parser("validate", help="check spec files and folders")
@@ -154,7 +214,18 @@ def build_parser() -> argparse.ArgumentParser:
     build.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
     build.add_argument("-o", "--output", help="output XML file (default: standard output)")
     build.add_argument("--bundle", metavar="DIR", help="write the XML and copies of its assets to DIR")
+    build.add_argument("--base", help="a registered base instead of the robot's default")
+    build.add_argument("--no-base", action="store_true", help="no base at all")
+    build.add_argument(
+        "--gripper", action="append", default=[], metavar="ARM=NAME", help="gripper per arm (NAME may be none)"
+    )
+    build.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
     build.set_defaults(run=command_build)
+
+    scene = commands.add_parser("scene", help="several placed robots in one MJCF")
+    scene.add_argument("scene", help="scene YAML file")
+    scene.add_argument("-o", "--output", help="output XML file (default: standard output)")
+    scene.set_defaults(run=command_scene)
 
     inspect = commands.add_parser("inspect", help="joint parameters and where each value came from")
     inspect.add_argument("robot", help="registered robot name or spec file")

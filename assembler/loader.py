@@ -1,4 +1,4 @@
-"""Spec files -> validated :class:`RobotSpec` objects, with file:line:col on every problem.
+"""Spec files -> validated spec objects (robots, bases, grippers), with file:line:col on every problem.
 
 Loading is two steps per document: parse the YAML with positions (:mod:`assembler.yaml_source`),
 then resolve ``extends:`` (a registered robot or another file) by merging the parent's fields
@@ -21,7 +21,7 @@ from pydantic import BaseModel, ValidationError
 
 from assembler.errors import AssemblerError, Location, Problem, SpecError, did_you_mean
 from assembler.paths import display_path, resolve_model_path
-from assembler.schema import RobotSpec
+from assembler.schema import SPEC_KINDS, PartSpec
 from assembler.yaml_source import DataPath, LocatedDocument, dotted, parse_yaml
 
 SPEC_SUFFIXES = (".yaml", ".yml")
@@ -36,7 +36,7 @@ NOT_INHERITED: tuple[str, ...] = ("name", "extends")
 class LoadedSpec:
     """A validated spec and the merged document it came from (for locating later problems)."""
 
-    spec: RobotSpec
+    spec: PartSpec
     document: LocatedDocument
 
     @property
@@ -152,13 +152,13 @@ class _Resolver:
             return self.batch[reference]
         found = self.lookup(reference)
         if found is None:
-            from assembler.registry import registered_robot_names
+            from assembler.registry import registered_names
 
-            known = sorted({*self.batch, *registered_robot_names()} - {child.data.get("name")})
+            known = sorted({*self.batch, *registered_names()} - {child.data.get("name")})
             raise SpecError(
                 Problem(
-                    f"unknown robot '{reference}'.{did_you_mean(reference, known)} "
-                    f"Known robots: {', '.join(known) or '(none)'}",
+                    f"unknown spec '{reference}'.{did_you_mean(reference, known)} "
+                    f"Known: {', '.join(known) or '(none)'}",
                     where,
                     "extends",
                 )
@@ -210,8 +210,10 @@ def _data_path(loc: tuple[Any, ...], data: Any) -> DataPath:
     return tuple(path)
 
 
-def _problems(error: ValidationError, loaded: LoadedSpec | LocatedDocument) -> list[Problem]:
-    document = loaded if isinstance(loaded, LocatedDocument) else loaded.document
+def problems_from_validation(
+    error: ValidationError, document: LocatedDocument, model: type[BaseModel]
+) -> list[Problem]:
+    """One positioned problem per pydantic error, in reading order."""
     problems: list[Problem] = []
     short: dict[DataPath, int] = {}  # vectors given too few values: path -> values expected
     for item in error.errors():
@@ -225,7 +227,7 @@ def _problems(error: ValidationError, loaded: LoadedSpec | LocatedDocument) -> l
             message = f"missing required field '{path[-1]}'; add it"
             problems.append(Problem(message, document.location(parent), dotted(parent) or None))
         elif kind == "extra_forbidden":
-            valid = _model_fields_at(RobotSpec, path[:-1])
+            valid = sorted(_model_fields_at(model, path[:-1]))
             message = (
                 f"unknown key '{path[-1]}'.{did_you_mean(str(path[-1]), valid)} "
                 f"Valid keys here: {', '.join(valid)}"
@@ -255,21 +257,25 @@ def _value_at(data: Any, path: DataPath) -> Any:
     return data
 
 
+def _spec_model(document: LocatedDocument) -> type[PartSpec]:
+    return SPEC_KINDS.get(str(document.data.get("kind", "robot")), SPEC_KINDS["robot"])
+
+
 def _validate(document: LocatedDocument) -> LoadedSpec:
     data = {k: v for k, v in document.data.items() if k != "__dir__"}
     kind = data.get("kind", "robot")
-    if kind != "robot":
+    if kind not in SPEC_KINDS:
         raise SpecError(
             Problem(
-                f"unknown spec kind '{kind}'; this version reads kind: robot",
+                f"unknown spec kind '{kind}'; use one of {', '.join(SPEC_KINDS)}",
                 document.marks.get(("kind", "<value>")) or document.location(("kind",)),
                 "kind",
             )
         )
     try:
-        spec = RobotSpec.model_validate(data)
+        spec = SPEC_KINDS[kind].model_validate(data)
     except ValidationError as error:
-        raise SpecError(_problems(error, document)) from None
+        raise SpecError(problems_from_validation(error, document, SPEC_KINDS[kind])) from None
     return LoadedSpec(spec=spec, document=document)
 
 

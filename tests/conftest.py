@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 TWO_LINK_MJCF = """\
 <mujoco model="twolink">
@@ -60,11 +60,13 @@ init_qpos: [0.5, -0.5]
 
 @pytest.fixture(autouse=True)
 def isolated_registry() -> Iterator[None]:
-    """Each test sees the shipped robots; whatever it registers is removed afterwards."""
-    snapshot = dict(REGISTERED_ROBOTS)
+    """Each test sees the shipped specs; whatever it registers is removed afterwards."""
+    tables = (REGISTERED_ROBOTS, REGISTERED_BASES, REGISTERED_GRIPPERS)
+    snapshots = [dict(table) for table in tables]
     yield
-    REGISTERED_ROBOTS.clear()
-    REGISTERED_ROBOTS.update(snapshot)
+    for table, snapshot in zip(tables, snapshots, strict=True):
+        table.clear()
+        table.update(snapshot)
 
 
 @pytest.fixture
@@ -85,3 +87,129 @@ def two_link(write: Callable[[str, str], Path]) -> Path:
     """A spec folder with the two-link robot (spec + MJCF); returns the spec file."""
     write("robots/twolink.xml", TWO_LINK_MJCF)
     return write("robots/twolink.yaml", TWO_LINK_SPEC)
+
+MOUNT_MJCF = """\
+<mujoco model="mount">
+  <worldbody>
+    <body name="base" pos="0 0 -0.5">
+      <geom name="post_col" type="cylinder" size="0.1 0.25" pos="0 0 -0.25" mass="10"/>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+
+MOBILE_MJCF = """\
+<mujoco model="mobile">
+  <worldbody>
+    <body name="base">
+      <joint name="joint_mobile_forward" type="slide" axis="1 0 0" limited="false"/>
+      <joint name="joint_mobile_yaw" type="hinge" axis="0 0 1" limited="false"/>
+      <geom name="chassis_col" type="box" size="0.3 0.2 0.1" pos="0 0 0.1" mass="40"/>
+      <body name="lift" pos="0 0 0.2">
+        <joint name="joint_torso_height" type="slide" axis="0 0 1" range="0 0.3"/>
+        <geom name="lift_col" type="box" size="0.05 0.05 0.2" pos="0 0 0.2" mass="5"/>
+        <body name="support" pos="0 0 0.4">
+          <site name="center" size="0.01"/>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <velocity name="actuator_mobile_forward" joint="joint_mobile_forward" kv="1000" ctrlrange="-1 1"/>
+    <velocity name="actuator_mobile_yaw" joint="joint_mobile_yaw" kv="1000" ctrlrange="-1 1"/>
+    <position name="actuator_torso" joint="joint_torso_height" kp="5000" dampratio="1" ctrlrange="0 0.3"/>
+  </actuator>
+  <sensor>
+    <jointpos name="torso_pos" joint="joint_torso_height"/>
+  </sensor>
+</mujoco>
+"""
+
+LEGGED_MJCF = """\
+<mujoco model="legged">
+  <worldbody>
+    <body name="trunk" pos="0 0 0.4">
+      <freejoint name="root"/>
+      <geom name="trunk_col" type="box" size="0.3 0.15 0.05" mass="10"/>
+      <body name="support" pos="0 0 0.05"><site name="center" size="0.01"/></body>
+      <body name="fr_thigh" pos="0.25 -0.15 0">
+        <joint name="fr_hip_leg" axis="0 1 0" range="-1 1"/>
+        <geom name="fr_col" type="capsule" fromto="0 0 0 0 0 -0.35" size="0.03" mass="1"/>
+      </body>
+      <body name="fl_thigh" pos="0.25 0.15 0">
+        <joint name="fl_hip_leg" axis="0 1 0" range="-1 1"/>
+        <geom name="fl_col" type="capsule" fromto="0 0 0 0 0 -0.35" size="0.03" mass="1"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="fr_act" joint="fr_hip_leg" kp="100"/>
+    <motor name="fl_act" joint="fl_hip_leg"/>
+  </actuator>
+</mujoco>
+"""
+
+NULL_BASE_MJCF = """\
+<mujoco model="null_base">
+  <worldbody>
+    <body name="support"><site name="center" size="0.01"/></body>
+  </worldbody>
+</mujoco>
+"""
+
+GRIPPER_MJCF = """\
+<mujoco model="pinch">
+  <compiler autolimits="true"/>
+  <option timestep="0.001"/>
+  <worldbody>
+    <body name="pinch_root" pos="0 0 0.01" quat="0.7071068 0 0 -0.7071068">
+      <site name="ft_frame" size="0.01"/>
+      <geom name="palm_col" type="box" size="0.02 0.04 0.02" pos="0 0 0.02" mass="0.3"/>
+      <body name="finger" pos="0 0 0.05">
+        <joint name="finger_joint" type="slide" axis="0 1 0" range="0 0.03"/>
+        <geom name="finger_pad_col" type="box" size="0.005 0.005 0.02" mass="0.05"/>
+      </body>
+      <body name="eef" pos="0 0 0.1" quat="0 1 0 0">
+        <site name="grip_site" size="0.005"/>
+        <site name="grip_site_cylinder" type="cylinder" size="0.005 1"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="finger_act" joint="finger_joint" kp="100" ctrlrange="0 0.03"/>
+  </actuator>
+  <sensor>
+    <force name="force_ee" site="ft_frame"/>
+    <torque name="torque_ee" site="ft_frame"/>
+  </sensor>
+</mujoco>
+"""
+
+PART_SPECS = {
+    "mount.yaml": "kind: base\nname: TestMount\ntype: mount\nmjcf: mount.xml\ntop_offset: [0, 0, -0.01]\nhorizontal_radius: 0.3\n",
+    "mobile.yaml": "kind: base\nname: TestMobile\ntype: mobile\nmjcf: mobile.xml\ninit_qpos: [0, 0, 0.2]\nhorizontal_radius: 0.4\n",
+    "legged.yaml": "kind: base\nname: TestLegs\ntype: legged\nmjcf: legged.xml\ninit_qpos: [0.3, -0.3]\n",
+    "null_base.yaml": "kind: base\nname: TestNull\ntype: null\nmjcf: null_base.xml\n",
+    "pinch.yaml": (
+        "kind: gripper\nname: TestPinch\nmjcf: pinch.xml\ninit_qpos: [0.02]\n"
+        "important_geoms:\n  right_fingerpad: [finger_pad_col]\n"
+    ),
+}
+
+
+@pytest.fixture
+def parts(write: Callable[[str, str], Path], two_link: Path) -> Path:
+    """Register a mount, a mobile base, a legged base, a null base and a gripper (plus TwoLink)."""
+    import assembler
+
+    for name, text in {
+        "mount.xml": MOUNT_MJCF,
+        "mobile.xml": MOBILE_MJCF,
+        "legged.xml": LEGGED_MJCF,
+        "null_base.xml": NULL_BASE_MJCF,
+        "pinch.xml": GRIPPER_MJCF,
+        **PART_SPECS,
+    }.items():
+        write(f"parts/{name}", text)
+    assembler.register_specs(two_link.parent, two_link.parent.parent / "parts")
+    return two_link.parent.parent / "parts"

@@ -40,7 +40,7 @@ def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureF
     lines = err.splitlines()
     assert len(lines) == 2
     assert lines[0].endswith(
-        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: kind, name, extends, description, mjcf, morphology, default_base, default_controller_config, init_qpos, base_xpos_offset, top_offset, horizontal_radius, joint_defaults, joints"
+        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: arm_type, base_xpos_offset, default_base, default_controller_config, default_grippers, description, eef_bodies, extends, gripper_mount, horizontal_radius, init_qpos, joint_defaults, joint_groups, joints, kind, mjcf, morphology, name, remove_actuation, remove_free_joint, top_offset"
     )
     assert lines[1].endswith("b.yaml:1:1: missing required field 'mjcf'; add it")
     assert "Traceback" not in err

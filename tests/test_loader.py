@@ -30,7 +30,7 @@ INVALID_SPECS = [
     pytest.param("name: A\n", "1:1: missing required field 'mjcf'; add it", id="missing-mjcf"),
     pytest.param(
         "name: A\nmjcf: a.xml\njoint_defaults:\n  dampng: 0.1\n",
-        "4:3: joint_defaults.dampng: unknown key 'dampng'. Did you mean 'damping'? Valid keys here: frictionloss, damping, armature",
+        "4:3: joint_defaults.dampng: unknown key 'dampng'. Did you mean 'damping'? Valid keys here: armature, damping, frictionloss",
         id="unknown-nested-key",
     ),
     pytest.param(
@@ -169,7 +169,7 @@ def test_inheritance_cycle_is_named(write: Write) -> None:
 
 def test_unknown_parent_suggests_the_closest_name(two_link: Path) -> None:
     assembler.register_specs(two_link)
-    with pytest.raises(SpecError, match=r"extends: unknown robot 'TwoLnk'. Did you mean 'TwoLink'\?"):
+    with pytest.raises(SpecError, match=r"extends: unknown spec 'TwoLnk'. Did you mean 'TwoLink'\?"):
         load_string("name: X\nextends: TwoLnk\n", assembler.catalog.registered_document)
 
 

@@ -1,6 +1,8 @@
 """Pydantic models of every spec format. No MuJoCo and no file I/O here: only shapes and rules."""
 
-from assembler.schema.base import FiniteFloat, StrictModel, Vec3
+from assembler.schema.base_spec import BaseSpec, BaseType
+from assembler.schema.common import FiniteFloat, StrictModel, Vec3, Vec4
+from assembler.schema.gripper import GripperSpec
 from assembler.schema.joints import (
     JOINT_RULE_ATTRIBUTES,
     OVERRIDABLE_ATTRIBUTES,
@@ -9,17 +11,34 @@ from assembler.schema.joints import (
     JointOverride,
     JointRule,
 )
-from assembler.schema.robot import RobotSpec
+from assembler.schema.parts import PartSpec
+from assembler.schema.robot import GROUPS, Arm, GripperMount, JointGroups, RobotSpec
+from assembler.schema.scene import SceneRobot, SceneSpec
+
+SPEC_KINDS: dict[str, type[PartSpec]] = {"robot": RobotSpec, "base": BaseSpec, "gripper": GripperSpec}
+"""The model of each part spec's ``kind`` (robot specs may leave ``kind`` out)."""
 
 __all__ = [
+    "GROUPS",
     "JOINT_RULE_ATTRIBUTES",
     "OVERRIDABLE_ATTRIBUTES",
+    "SPEC_KINDS",
+    "Arm",
+    "BaseSpec",
+    "BaseType",
     "FiniteFloat",
+    "GripperMount",
+    "GripperSpec",
     "InverseIndexRule",
     "JointDefaults",
+    "JointGroups",
     "JointOverride",
     "JointRule",
+    "PartSpec",
     "RobotSpec",
+    "SceneRobot",
+    "SceneSpec",
     "StrictModel",
     "Vec3",
+    "Vec4",
 ]

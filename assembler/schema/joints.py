@@ -12,7 +12,7 @@ from typing import Annotated, Any
 from pydantic import Field, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError
 
-from assembler.schema.base import NonNegativeFloat, StrictModel
+from assembler.schema.common import NonNegativeFloat, StrictModel
 
 JOINT_RULE_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature")
 """The joint attributes that have a default rule, in the order robosuite applies them."""

@@ -4,24 +4,23 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, WrapValidator
+from pydantic import Field, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError
 
-from assembler.schema.base import FiniteFloat, NonNegativeFloat, StrictModel, Vec3
+from assembler.schema.common import FiniteFloat, NonNegativeFloat, StrictModel, Vec3, Vec4
 from assembler.schema.expressions import (
     OFFSET_VARIABLES,
     ExpressionError,
     evaluate_expression,
     parse_expression,
 )
-from assembler.schema.joints import JointDefaults, JointOverride
-
-NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
-
-Name = Annotated[str, Field(pattern=NAME_PATTERN, max_length=64)]
-"""A registry name: it becomes a Python class name, so letters, digits and underscores."""
+from assembler.schema.joints import JointDefaults
+from assembler.schema.parts import Name, PartSpec
 
 Morphology = Literal["manipulator", "legged_manipulator", "humanoid", "humanoid_upper_body"]
+Arm = Literal["right", "left"]
+GROUPS: tuple[str, ...] = ("torso", "head", "legs", "base")
+"""Body-part groups besides the arms, in robosuite's order of precedence."""
 
 
 def _number_or_expression(value: Any, handler: Any) -> Any:
@@ -48,35 +47,73 @@ OffsetValue = Annotated[FiniteFloat | str, WrapValidator(_number_or_expression)]
 Offset3 = tuple[OffsetValue, OffsetValue, OffsetValue]
 
 
-class RobotSpec(StrictModel):
-    """A robot: its MJCF, morphology, joint parameters, initial pose and placement offsets."""
+class GripperMount(StrictModel):
+    """Where a gripper sits on an arm's end-effector body, replacing the gripper root's own pose."""
+
+    pos: Vec3 | None = None
+    """Position of the gripper root in the end-effector body's frame (metres); null keeps the gripper's."""
+
+    quat: Vec4 | None = None
+    """Orientation (w, x, y, z) of the gripper root in the end-effector body's frame; null keeps the gripper's."""
+
+
+class JointGroups(StrictModel):
+    """Which of the robot's joints belong to which body part: names or globs, as written in the MJCF."""
+
+    torso: list[str] = Field(default_factory=list)
+    """Torso joints (e.g. a waist or a lift)."""
+
+    head: list[str] = Field(default_factory=list)
+    """Head joints."""
+
+    legs: list[str] = Field(default_factory=list)
+    """Leg joints."""
+
+    base: list[str] = Field(default_factory=list)
+    """Joints that move the whole robot (mobile base joints inside the robot's own file)."""
+
+    right: list[str] = Field(default_factory=list)
+    """Joints of the right arm; with no arm lists, every joint not in another group is an arm joint."""
+
+    left: list[str] = Field(default_factory=list)
+    """Joints of the left arm (bimanual robots)."""
+
+
+class RobotSpec(PartSpec):
+    """A robot: its MJCF, morphology, arms, joint parameters, initial pose, offsets and default parts."""
 
     kind: Literal["robot"] = "robot"
     """What this document describes; robot specs may leave it out."""
 
-    name: Name
-    """The registry name, e.g. 'Sparrow7'; `create_robot(name)` and `assembler build <name>` use it."""
-
-    extends: str | None = None
-    """A registered robot name or a spec file (relative to this file) whose fields this spec inherits."""
-
-    description: str = ""
-    """One or two sentences for `assembler list` and the generated docs."""
-
-    mjcf: str = Field(min_length=1)
-    """The robot's MJCF file: relative to this spec file, absolute, or 'package://<python package>/<path>'."""
-
     morphology: Morphology = "manipulator"
     """The model class the spec becomes: a manipulator, legged manipulator, or (upper-body) humanoid."""
+
+    arm_type: Literal["single", "bimanual"] = "single"
+    """One arm (right) or two (right and left); humanoids are always bimanual."""
+
+    eef_bodies: dict[Arm, str] = Field(default_factory=dict)
+    """End-effector body per arm, as named in the MJCF; default right_hand (and left_hand)."""
 
     default_base: Name | None = None
     """The base the robot is assembled with by default (a registered base name), or null for none."""
 
+    default_grippers: dict[Arm, Name | None] = Field(default_factory=dict)
+    """The gripper assembled on each arm by default (a registered gripper name), or null for none."""
+
+    gripper_mount: dict[Arm, GripperMount] = Field(default_factory=dict)
+    """Per arm, the pose of the gripper on the end-effector body (robosuite's gripper_mount_*_offset)."""
+
+    joint_groups: JointGroups | None = None
+    """Body-part membership of the joints; null uses robosuite's name rules (torso, head, leg)."""
+
+    remove_actuation: list[str] = Field(default_factory=list)
+    """Joints (names or globs) removed with everything that drives or measures them (legged robots)."""
+
+    remove_free_joint: bool = False
+    """Remove the root's free joint, welding the robot to its base or the world."""
+
     default_controller_config: dict[str, str] = Field(default_factory=dict)
     """Controller config name per body part (e.g. right: default_panda), for controller libraries."""
-
-    init_qpos: list[FiniteFloat] | None = None
-    """Initial joint positions, one per robot joint in MuJoCo's order; null keeps the MJCF's qpos0."""
 
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
     """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length."""
@@ -88,10 +125,29 @@ class RobotSpec(StrictModel):
     """Radius of the robot's footprint in metres, for placing it clear of other objects."""
 
     joint_defaults: JointDefaults = Field(default_factory=JointDefaults)
-    """Rules for frictionloss, damping and armature where the MJCF sets none."""
+    """Rules for frictionloss, damping and armature where the MJCF sets none (robosuite's by default)."""
 
-    joints: list[JointOverride] = Field(default_factory=list)
-    """Per-joint overrides, applied in order after the default rules."""
+    @model_validator(mode="after")
+    def _arms_are_consistent(self) -> RobotSpec:
+        arms = self.arms
+        for field in ("eef_bodies", "default_grippers", "gripper_mount"):
+            extra = sorted(set(getattr(self, field)) - set(arms))
+            if extra:
+                raise ValueError(
+                    f"{field} names arm '{extra[0]}', but a {self.arm_type} robot has {', '.join(arms)}"
+                )
+        if self.morphology in ("humanoid", "humanoid_upper_body") and self.arm_type != "bimanual":
+            raise ValueError(f"a {self.morphology} has two arms: set arm_type: bimanual")
+        return self
+
+    @property
+    def arms(self) -> tuple[Arm, ...]:
+        """The arms, right first."""
+        return ("right",) if self.arm_type == "single" else ("right", "left")
+
+    def eef_body(self, arm: Arm) -> str:
+        """The end-effector body of ``arm`` as named in the MJCF."""
+        return self.eef_bodies.get(arm, f"{arm}_hand")
 
     def resolve_base_xpos_offset(self, arena: str, **variables: float) -> tuple[float, float, float]:
         """The base offset for ``arena`` with expression variables bound (e.g. ``table_length=0.8``)."""

@@ -16,6 +16,10 @@ Vec3 = tuple[FiniteFloat, FiniteFloat, FiniteFloat]
 """Three finite numbers, e.g. a position (x, y, z) in metres."""
 
 
+Vec4 = tuple[FiniteFloat, FiniteFloat, FiniteFloat, FiniteFloat]
+"""Four finite numbers, e.g. a quaternion (w, x, y, z)."""
+
+
 class StrictModel(BaseModel):
     """Base of all spec models: unknown keys are errors, values are frozen after validation,
     and each field's docstring becomes its description in the JSON Schema."""

@@ -1,0 +1,135 @@
+"""Compose parts into one assembly: mount, mobile, legged and null bases; grippers on hands.
+
+Every part is attached with ``MjSpec.attach`` under its own non-empty prefix, so names, default
+classes and assets never collide (an empty prefix duplicates default classes: MuJoCo #2707). Bodies
+are selected by name, never by position. Where robosuite re-parents the arm under a base's
+support body, we attach the robot's own root there, renamed ``manipulator_mount`` (and so
+prefixed ``robot{idn}_manipulator_mount``); a new outer body keeps the robot root's name and pose.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import mujoco
+
+from assembler.errors import MjcfError, summarize_names
+from assembler.mjcf.removal import remove_free_joints
+
+FREE = mujoco.mjtJoint.mjJNT_FREE
+MANIPULATOR_MOUNT = "manipulator_mount"
+
+
+def attach(
+    assembly: mujoco.MjSpec,
+    part: mujoco.MjSpec,
+    frame: mujoco.MjsFrame,
+    prefix: str,
+) -> None:
+    """Attach a whole part under ``frame`` with ``prefix``; the assembly's model-wide options win
+    (MuJoCo reports the conflicts at compile time; see :func:`assembler.mjcf.keyframe.compile_with_home`)."""
+    assembly.attach(part, frame=frame, prefix=prefix)
+
+
+def find_body(assembly: mujoco.MjSpec, name: str, what: str) -> mujoco.MjsBody:
+    """The body called ``name``; a clear error listing the bodies when it does not exist."""
+    body = assembly.body(name)
+    if body is None:
+        names = [b.name for b in assembly.bodies[1:] if b.name]
+        raise MjcfError(f"{what}: no body named '{name}'. Bodies: {summarize_names(names)}")
+    return body
+
+
+def new_assembly(globals_xml: str) -> mujoco.MjSpec:
+    """An empty assembly whose model-wide sections (option, compiler, ...) are the given ones."""
+    return mujoco.MjSpec.from_string(globals_xml)
+
+
+def attach_at_world(assembly: mujoco.MjSpec, part: mujoco.MjSpec, prefix: str) -> None:
+    """Attach a part at the world origin."""
+    attach(assembly, part, assembly.worldbody.add_frame(), prefix)
+
+
+def attach_mount(
+    assembly: mujoco.MjSpec, robot_root: str, mount: mujoco.MjSpec, prefix: str, offset: Sequence[float]
+) -> None:
+    """A fixed mount becomes the last child of the robot's root body; its root is moved to ``offset``
+    (robosuite overwrites the mount root's own position the same way)."""
+    root = find_body(assembly, robot_root, "mount")
+    mount.worldbody.first_body().pos = list(offset)
+    attach(assembly, mount, root.add_frame(), prefix)
+
+
+def attach_robot_on_support(
+    assembly: mujoco.MjSpec,
+    robot: mujoco.MjSpec,
+    robot_prefix: str,
+    base: mujoco.MjSpec,
+    base_prefix: str,
+    support_body: str,
+    offset: Sequence[float],
+    legged: bool,
+) -> None:
+    """A mobile or legged base between the robot's root and the rest of the robot.
+
+    The result is ``<robot root>`` (pose of the robot's root; for a legged base, its free joint and
+    the robot root's inertia) -> base root, moved to ``offset`` -> ... -> ``support_body`` ->
+    ``<robot prefix>manipulator_mount`` (the robot's former root: its children, sites and cameras;
+    no inertia, no free joint, as in robosuite) -> the arm.
+    """
+    root = robot.worldbody.first_body()
+    outer = assembly.worldbody.add_body(name=robot_prefix + root.name, pos=root.pos, quat=root.quat)
+    if legged:
+        outer.mass, outer.ipos, outer.iquat = root.mass, root.ipos, root.iquat
+        outer.inertia, outer.fullinertia = root.inertia, root.fullinertia
+        outer.explicitinertial = root.explicitinertial
+        base_root = base.worldbody.first_body()
+        if any(j.type == FREE for j in base_root.joints):
+            remove_free_joints(base)
+            outer.add_freejoint()
+    base.worldbody.first_body().pos = list(offset)  # replaces the base root's own position
+    attach(assembly, base, outer.add_frame(), base_prefix)
+    support = find_body(assembly, base_prefix + support_body, "base support body")
+
+    root.name = MANIPULATOR_MOUNT
+    root.pos = [0.0, 0.0, 0.0]
+    root.quat = [1.0, 0.0, 0.0, 0.0]
+    root.explicitinertial = False
+    root.mass = 0.0
+    root.inertia = [0.0, 0.0, 0.0]
+    for joint in list(root.joints):
+        if joint.type == FREE:
+            robot.delete(joint)
+    attach(assembly, robot, support.add_frame(), robot_prefix)
+
+
+def add_sites_at_world(assembly: mujoco.MjSpec, part: mujoco.MjSpec, prefix: str) -> None:
+    """A null base contributes only its sites, placed in the world frame (robosuite's add_null_base)."""
+    for site in part.sites:
+        assembly.worldbody.add_site(
+            name=prefix + site.name,
+            type=site.type,
+            size=site.size,
+            pos=site.pos,
+            quat=site.quat,
+            rgba=site.rgba,
+            group=site.group,
+        )
+
+
+def attach_gripper(
+    assembly: mujoco.MjSpec,
+    hand_body: str,
+    gripper: mujoco.MjSpec,
+    prefix: str,
+    pos: Sequence[float] | None,
+    quat: Sequence[float] | None,
+) -> None:
+    """Attach a gripper as the last child of the hand body, with the robot's mount pose if given."""
+    hand = find_body(assembly, hand_body, "end-effector body")
+    root = gripper.worldbody.first_body()
+    if pos is not None:
+        root.pos = list(pos)
+    if quat is not None:
+        root.quat = list(quat)
+    attach(assembly, gripper, hand.add_frame(), prefix)

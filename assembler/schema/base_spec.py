@@ -1,0 +1,51 @@
+"""The base spec: what a robot stands on, and how the assembler merges it with the robot."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from typing import Any
+
+from pydantic import Field, field_validator
+
+from assembler.schema.common import NonNegativeFloat, Vec3
+from assembler.schema.parts import PartSpec
+
+BaseType = Literal["mount", "mobile", "legged", "null"]
+
+
+class BaseSpec(PartSpec):
+    """A fixed mount, a wheeled mobile base, a legged base, or a null base (sites only)."""
+
+    kind: Literal["base"]
+    """Marks a base spec."""
+
+    type: BaseType
+    """How it merges: mount (under the robot's root), mobile or legged (the arm moves onto `support_body`), null."""
+
+    @field_validator("type", mode="before")
+    @classmethod
+    def _yaml_null_means_null_base(cls, value: Any) -> Any:
+        # `type: null` in YAML is the null value, not the text; both mean a null base.
+        return "null" if value is None else value
+
+    support_body: str = "support"
+    """The body the robot's arm is attached to (mobile and legged bases), as named in the MJCF."""
+
+    top_offset: Vec3 = (0.0, 0.0, 0.0)
+    """Offset from the base's root to the surface the robot stands on (metres)."""
+
+    bottom_offset: Vec3 | None = None
+    """Offset from the base's root to its bottom; null takes the root body's position in the MJCF (robosuite)."""
+
+    horizontal_radius: NonNegativeFloat = 0.0
+    """Radius of the base's footprint in metres."""
+
+    joint_groups: dict[Literal["base", "torso", "legs", "head"], list[str]] | None = None
+    """Body-part membership of the base's joints (names or globs); null uses robosuite's name rules."""
+
+    remove_actuation: list[str] = Field(default_factory=list)
+    """Joints (names or globs) removed with everything that drives or measures them."""
+
+    remove_free_joint: bool = False
+    """Remove the base's free joint (a floating legged base becomes welded)."""
