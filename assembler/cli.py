@@ -12,10 +12,10 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from assembler.assembly import DEFAULT, assemble
 from assembler.catalog import add_spec_folders, register_specs
 from assembler.errors import AssemblerError, Problem
 from assembler.loader import SPEC_SUFFIXES
-from assembler.assembly import DEFAULT, assemble
 from assembler.mjcf.emit import bundle, to_xml, write_atomically
 from assembler.models import PartModel, RobotModel
 from assembler.paths import display_path
@@ -48,7 +48,9 @@ def _gripper_choices(values: list[str]) -> dict[str, str | None]:
     for value in values:
         arm, sep, name = value.partition("=")
         if not sep or not arm or not name:
-            raise AssemblerError(f"--gripper expects ARM=NAME (e.g. right=PincerGripper or left=none), got '{value}'")
+            raise AssemblerError(
+                f"--gripper expects ARM=NAME (e.g. right=PincerGripper or left=none), got '{value}'"
+            )
         choices[arm] = None if name.lower() == "none" else name
     return choices
 
@@ -106,9 +108,12 @@ def command_validate(args: argparse.Namespace) -> int:
     problems: list[Problem] = []
     for cls in classes:
         try:
-            robot = cls(idn=0)
+            part = cls(idn=0)
             if args.compile:
-                robot.get_model()
+                if isinstance(part, RobotModel):
+                    assemble(cls.__name__, idn=0).get_model()  # with its default base and grippers
+                else:
+                    part.compile_alone()
         except AssemblerError as error:
             problems.extend(error.problems)
     if problems:
@@ -217,7 +222,11 @@ def build_parser() -> argparse.ArgumentParser:
     build.add_argument("--base", help="a registered base instead of the robot's default")
     build.add_argument("--no-base", action="store_true", help="no base at all")
     build.add_argument(
-        "--gripper", action="append", default=[], metavar="ARM=NAME", help="gripper per arm (NAME may be none)"
+        "--gripper",
+        action="append",
+        default=[],
+        metavar="ARM=NAME",
+        help="gripper per arm (NAME may be none)",
     )
     build.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
     build.set_defaults(run=command_build)

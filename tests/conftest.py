@@ -88,6 +88,7 @@ def two_link(write: Callable[[str, str], Path]) -> Path:
     write("robots/twolink.xml", TWO_LINK_MJCF)
     return write("robots/twolink.yaml", TWO_LINK_SPEC)
 
+
 MOUNT_MJCF = """\
 <mujoco model="mount">
   <worldbody>

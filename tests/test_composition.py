@@ -51,7 +51,10 @@ def test_mobile_base_goes_between_the_root_and_the_arm(parts: Path) -> None:
     assert robot.arm_joints == ["robot1_shoulder", "robot1_elbow"]
     assert robot.all_joints == robot.joints + robot.base.joints  # type: ignore[union-attr]
     # the base's actuators and sensors came along
-    assert model.actuator("mobilebase1_actuator_mobile_forward").trnid[0] == model.joint("mobilebase1_joint_mobile_forward").id
+    assert (
+        model.actuator("mobilebase1_actuator_mobile_forward").trnid[0]
+        == model.joint("mobilebase1_joint_mobile_forward").id
+    )
     assert model.sensor("mobilebase1_torso_pos").objid[0] == model.joint("mobilebase1_joint_torso_height").id
 
 
@@ -93,13 +96,19 @@ def test_null_base_adds_only_its_sites(parts: Path) -> None:
 
 def test_a_second_base_is_an_error(parts: Path) -> None:
     robot = assembler.assemble("TwoLink", base="TestMount")
-    with pytest.raises(AssemblerError, match=r"TwoLink0 already has the base TestMount0; a robot stands on one base"):
+    with pytest.raises(
+        AssemblerError, match=r"TwoLink0 already has the base TestMount0; a robot stands on one base"
+    ):
         robot.add_base(assembler.create_base("TestNull"))
 
 
 def test_missing_support_body_is_named(parts: Path, write) -> None:  # type: ignore[no-untyped-def]
     write("parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n")
-    assembler.register_specs(write("parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n"))
+    assembler.register_specs(
+        write(
+            "parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n"
+        )
+    )
     robot = assembler.assemble("TwoLink", base="NoSupport")
     with pytest.raises(MjcfError, match=r"base support body: no body named 'mobilebase0_support'. Bodies: "):
         robot.get_model()
@@ -146,15 +155,23 @@ def test_missing_end_effector_body_is_named(parts: Path, write) -> None:  # type
     )
     robot = cls(idn=0)
     robot.add_gripper(assembler.create_gripper("TestPinch", idn="0_right"), arm="right")
-    with pytest.raises(MjcfError, match=r"end-effector body: no body named 'robot0_tool0'. Bodies: robot0_base, "):
+    with pytest.raises(
+        MjcfError, match=r"end-effector body: no body named 'robot0_tool0'. Bodies: robot0_base, "
+    ):
         robot.get_model()
 
 
 def test_dangling_important_names_are_refused(parts: Path, write) -> None:  # type: ignore[no-untyped-def]
     (cls,) = assembler.register_specs(
-        write("parts/bad_pinch.yaml", "kind: gripper\nname: BadPinch\nmjcf: pinch.xml\nimportant_geoms: {left_fingerpad: [finger1_pad]}\n")
+        write(
+            "parts/bad_pinch.yaml",
+            "kind: gripper\nname: BadPinch\nmjcf: pinch.xml\nimportant_geoms: {left_fingerpad: [finger1_pad]}\n",
+        )
     )
-    with pytest.raises(MjcfError, match=r"bad_pinch.yaml:4:35: important_geoms.left_fingerpad: 'finger1_pad' does not exist in the MJCF"):
+    with pytest.raises(
+        MjcfError,
+        match=r"bad_pinch.yaml:4:35: important_geoms.left_fingerpad: 'finger1_pad' does not exist in the MJCF",
+    ):
         cls(idn="0_right")
 
 

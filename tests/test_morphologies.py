@@ -95,7 +95,8 @@ def test_nested_classes_and_childclass_resolve_as_mujoco_does(humanoid: Path) ->
 
 def test_declared_groups_win_over_name_rules(humanoid: Path) -> None:
     humanoid.write_text(
-        humanoid.read_text() + "joint_groups:\n  torso: [torso_yaw, head_pan]\n  right: [r_*]\n  left: [l_shoulder]\n  legs: [l_leg_hip]\n"
+        humanoid.read_text()
+        + "joint_groups:\n  torso: [torso_yaw, head_pan]\n  right: [r_*]\n  left: [l_shoulder]\n  legs: [l_leg_hip]\n"
     )
     (cls,) = assembler.register_specs(humanoid)
     robot = cls(idn=0)
@@ -118,7 +119,9 @@ def test_upper_body_humanoid_without_legs(humanoid: Path) -> None:
 
 def test_humanoid_must_be_bimanual(write) -> None:  # type: ignore[no-untyped-def]
     spec = write("h/bad.yaml", "name: Bad\nmjcf: torso.xml\nmorphology: humanoid\n")
-    with pytest.raises(SpecError, match=r"bad.yaml:1:1: Value error, a humanoid has two arms: set arm_type: bimanual"):
+    with pytest.raises(
+        SpecError, match=r"bad.yaml:1:1: Value error, a humanoid has two arms: set arm_type: bimanual"
+    ):
         assembler.register_specs(spec)
 
 

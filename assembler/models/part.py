@@ -166,6 +166,18 @@ class PartModel(metaclass=RegisteringMeta):
                 geom.material = ""
         return spec
 
+    def compile_alone(self) -> mujoco.MjModel:
+        """Compile this part on its own (as ``assembler validate --compile`` does for bases and grippers)."""
+        from assembler.mjcf import compose
+        from assembler.mjcf.keyframe import compile_with_home
+
+        assembly = compose.new_assembly(self.source.globals_xml)
+        compose.attach_at_world(assembly, self.part_spec(), self.naming_prefix)
+        where = self.loaded.source if self.loaded is not None else type(self).__qualname__
+        return compile_with_home(
+            assembly, self.home_qpos(), f"{where}: {self.family} '{type(self).__name__}'"
+        )
+
     # ----- names --------------------------------------------------------------------------
 
     @property

@@ -195,6 +195,8 @@ class RobotModel(PartModel):
     def bottom_offset(self) -> FloatArray:
         """Vector from the root body to the bottom of the robot (and of its base, when it has one)."""
         if self.base is None:
+            if self.spec.bottom_offset is not None:
+                return np.array(self.spec.bottom_offset, dtype=float)
             return self.base_offset
         return self.base.bottom_offset - self.base.top_offset + self.base_offset
 

@@ -124,6 +124,9 @@ class RobotSpec(PartSpec):
     horizontal_radius: NonNegativeFloat = 0.5
     """Radius of the robot's footprint in metres, for placing it clear of other objects."""
 
+    bottom_offset: Vec3 | None = None
+    """Vector from the root body to the robot's bottom without a base; null: the root's MJCF position."""
+
     joint_defaults: JointDefaults = Field(default_factory=JointDefaults)
     """Rules for frictionloss, damping and armature where the MJCF sets none (robosuite's by default)."""
 
