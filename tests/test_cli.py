@@ -129,3 +129,53 @@ def test_schema_is_json_schema_with_every_field_documented(
             name for name, field in definition.get("properties", {}).items() if not field.get("description")
         ]
     assert undocumented == []
+
+
+def test_build_with_base_and_gripper_choices(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    out = tmp_path / "out.xml"
+    code, _, _ = run(capsys, "build", "TwinTorso", "--gripper", "right=TriHand", "--gripper", "left=none", "-o", str(out))
+    assert code == 0
+    model = mujoco.MjModel.from_xml_path(str(out))
+    bodies = {model.body(i).name for i in range(model.nbody)}
+    assert "gripper0_right_tri_hand" in bodies
+    assert not any(name.startswith("gripper0_left_") for name in bodies)
+
+
+def test_build_arm_only(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    out = tmp_path / "arm.xml"
+    assert run(capsys, "build", "Sparrow7", "--no-base", "--no-grippers", "-o", str(out))[0] == 0
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert model.nu == 7 and model.nbody == 1 + 9  # world + base, link1..7, right_hand
+
+
+def test_bad_gripper_choice_is_one_line(capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, "build", "Sparrow7", "--gripper", "TriHand")
+    assert code == 1
+    assert err == "--gripper expects ARM=NAME (e.g. right=PincerGripper or left=none), got 'TriHand'\n"
+
+
+def test_list_bases_and_grippers(capsys: pytest.CaptureFixture[str]) -> None:
+    _, out, _ = run(capsys, "list", "bases")
+    assert {line.split()[0]: line.split()[1] for line in out.splitlines()[1:]} == {
+        "Pedestal": "mount",
+        "QuadrupedBase": "legged",
+        "RoverBase": "mobile",
+        "SiteOnlyBase": "null",
+    }
+    _, out, _ = run(capsys, "list", "grippers")
+    assert "PincerGripper" in out and "TriHand" in out
+
+
+def test_scene_places_robots_with_unique_names(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    out = tmp_path / "scene.xml"
+    scene = Path(__file__).parent.parent / "scenes" / "two_arms.yaml"
+    code, _, err = run(capsys, "scene", str(scene), "-o", str(out))
+    assert code == 0 and "Sparrow70, Finch61" in err
+    model = mujoco.MjModel.from_xml_path(str(out))
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    mujoco.mj_forward(model, data)
+    assert data.body("robot0_base").xpos[0] == pytest.approx(-0.6)
+    assert data.body("robot1_base").xpos[0] == pytest.approx(0.6)
+    assert data.body("mobilebase1_base").xpos[2] == pytest.approx(0.0, abs=1e-9)  # the rover on the floor
+    assert model.body("robot1_manipulator_mount").parentid[0] == model.body("mobilebase1_support").id

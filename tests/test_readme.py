@@ -17,9 +17,9 @@ def _blocks(language: str) -> list[str]:
     return re.findall(rf"```{language}\n(.*?)```", README, flags=re.DOTALL)
 
 
-def test_readme_python_example_runs() -> None:
-    (example,) = _blocks("python")
-    exec(compile(example, "README.md", "exec"), {})
+def test_readme_python_examples_run() -> None:
+    for example in _blocks("python"):
+        exec(compile(example, "README.md", "exec"), {})
 
 
 def test_readme_spec_example_validates() -> None:
