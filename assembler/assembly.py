@@ -1,4 +1,4 @@
-"""``assemble``: a robot with its base and grippers, by name, the way robosuite's ``Robot.load_model`` does."""
+"""``assemble``: a robot with its base and grippers, by name, as robosuite's ``Robot.load_model`` does."""
 
 from __future__ import annotations
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from pathlib import Path
+from typing import Any
 
 from assembler.errors import Problem, RegistryError
 from assembler.loader import LoadedSpec, load_paths, load_string
@@ -17,7 +18,11 @@ from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED
 from assembler.schema import RobotSpec
 from assembler.yaml_source import LocatedDocument
 
-TABLES = {"robot": REGISTERED_ROBOTS, "base": REGISTERED_BASES, "gripper": REGISTERED_GRIPPERS}
+TABLES: dict[str, dict[str, Any]] = {
+    "robot": REGISTERED_ROBOTS,
+    "base": REGISTERED_BASES,
+    "gripper": REGISTERED_GRIPPERS,
+}
 
 
 def kind_of(loaded: LoadedSpec) -> str:

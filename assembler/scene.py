@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import mujoco
+import numpy as np
 from pydantic import ValidationError
 
 from assembler.assembly import assemble
@@ -26,7 +27,8 @@ from assembler.yaml_source import parse_yaml
 
 FLOOR_XML = """<mujoco>
   <asset>
-    <texture name="grid" type="2d" builtin="checker" rgb1=".75 .75 .75" rgb2=".6 .6 .6" width="256" height="256"/>
+    <texture name="grid" type="2d" builtin="checker" rgb1=".75 .75 .75" rgb2=".6 .6 .6"
+             width="256" height="256"/>
     <material name="grid" texture="grid" texrepeat="8 8" reflectance="0.1"/>
   </asset>
   <worldbody>
@@ -71,9 +73,9 @@ def build_scene(spec: SceneSpec, folder: Path | None = None) -> Scene:
         if name.endswith(SPEC_SUFFIXES):
             (cls,) = register_specs((folder or Path.cwd()) / name)
             name = cls.__name__
-        robot = assemble(name, idn=idn, base=entry.base, grippers=entry.grippers)
-        robot.set_base_xpos(entry.pos)
-        robot.set_base_ori(entry.ori)
+        robot = assemble(name, idn=idn, base=entry.base, grippers=dict(entry.grippers.items()))
+        robot.set_base_xpos(np.array(entry.pos))
+        robot.set_base_ori(np.array(entry.ori))
         if assembly is None:
             assembly = compose.new_assembly(robot.source.globals_xml)
             assembly.modelname = spec.name

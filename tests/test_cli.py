@@ -133,7 +133,9 @@ def test_schema_is_json_schema_with_every_field_documented(
 
 def test_build_with_base_and_gripper_choices(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     out = tmp_path / "out.xml"
-    code, _, _ = run(capsys, "build", "TwinTorso", "--gripper", "right=TriHand", "--gripper", "left=none", "-o", str(out))
+    code, _, _ = run(
+        capsys, "build", "TwinTorso", "--gripper", "right=TriHand", "--gripper", "left=none", "-o", str(out)
+    )
     assert code == 0
     model = mujoco.MjModel.from_xml_path(str(out))
     bodies = {model.body(i).name for i in range(model.nbody)}

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import mujoco
+from numpy.typing import ArrayLike
 
 from assembler.errors import MjcfError, summarize_names
 from assembler.mjcf.removal import remove_free_joints
@@ -51,12 +52,12 @@ def attach_at_world(assembly: mujoco.MjSpec, part: mujoco.MjSpec, prefix: str) -
 
 
 def attach_mount(
-    assembly: mujoco.MjSpec, robot_root: str, mount: mujoco.MjSpec, prefix: str, offset: Sequence[float]
+    assembly: mujoco.MjSpec, robot_root: str, mount: mujoco.MjSpec, prefix: str, offset: ArrayLike
 ) -> None:
     """A fixed mount becomes the last child of the robot's root body; its root is moved to ``offset``
     (robosuite overwrites the mount root's own position the same way)."""
     root = find_body(assembly, robot_root, "mount")
-    mount.worldbody.first_body().pos = list(offset)
+    mount.worldbody.first_body().pos = offset
     attach(assembly, mount, root.add_frame(), prefix)
 
 
@@ -67,7 +68,7 @@ def attach_robot_on_support(
     base: mujoco.MjSpec,
     base_prefix: str,
     support_body: str,
-    offset: Sequence[float],
+    offset: ArrayLike,
     legged: bool,
 ) -> None:
     """A mobile or legged base between the robot's root and the rest of the robot.
@@ -87,7 +88,7 @@ def attach_robot_on_support(
         if any(j.type == FREE for j in base_root.joints):
             remove_free_joints(base)
             outer.add_freejoint()
-    base.worldbody.first_body().pos = list(offset)  # replaces the base root's own position
+    base.worldbody.first_body().pos = offset  # replaces the base root's own position
     attach(assembly, base, outer.add_frame(), base_prefix)
     support = find_body(assembly, base_prefix + support_body, "base support body")
 

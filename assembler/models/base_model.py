@@ -62,7 +62,7 @@ class RobotBaseModel(PartModel):
             for group, patterns in declared.items():
                 if any(joint in matching_joints(p, [joint]) for p in patterns):
                     return group
-        group = robosuite_group(joint)
-        if group is not None:
-            return group
+        by_name = robosuite_group(joint)
+        if by_name is not None:
+            return by_name
         return "legs" if self.spec.type == "legged" else "base"

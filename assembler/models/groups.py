@@ -44,7 +44,7 @@ class PerArm(list[str]):
         super().__init__(name for names in by_arm.values() for name in names)
         self.by_arm = by_arm
 
-    def __getitem__(self, key):  # type: ignore[no-untyped-def, override]
+    def __getitem__(self, key):  # type: ignore[no-untyped-def]
         if isinstance(key, str):
             return self.by_arm[key]
         return super().__getitem__(key)

@@ -73,7 +73,7 @@ class ManipulatorModel(RobotModel):
 
     def _attach_grippers(self, assembly: mujoco.MjSpec) -> None:
         for arm, gripper in self.grippers.items():
-            mount = self.spec.gripper_mount.get(arm)
+            mount = self.spec.gripper_mount.get(arm)  # type: ignore[call-overload]
             compose.attach_gripper(
                 assembly,
                 self.eef_name[arm],
@@ -116,9 +116,9 @@ class ManipulatorModel(RobotModel):
                 if any(matching_joints(p, [joint]) for p in getattr(declared, group)):
                     return group
         else:
-            group = robosuite_group(joint)
-            if group is not None:
-                return group
+            by_name = robosuite_group(joint)
+            if by_name is not None:
+                return by_name
         return arm_side(joint, self.arms)
 
     def _joint_groups(self) -> dict[str, list[str]]:

@@ -19,7 +19,7 @@ class BaseSpec(PartSpec):
     """Marks a base spec."""
 
     type: BaseType
-    """How it merges: mount (under the robot's root), mobile or legged (the arm moves onto `support_body`), null."""
+    """How it merges: mount (under the robot's root), mobile or legged (arm on `support_body`), null."""
 
     @field_validator("type", mode="before")
     @classmethod
@@ -34,7 +34,7 @@ class BaseSpec(PartSpec):
     """Offset from the base's root to the surface the robot stands on (metres)."""
 
     bottom_offset: Vec3 | None = None
-    """Offset from the base's root to its bottom; null takes the root body's position in the MJCF (robosuite)."""
+    """Offset from the base's root to its bottom; null: the root body's MJCF position (robosuite)."""
 
     horizontal_radius: NonNegativeFloat = 0.0
     """Radius of the base's footprint in metres."""

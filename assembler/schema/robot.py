@@ -54,7 +54,7 @@ class GripperMount(StrictModel):
     """Position of the gripper root in the end-effector body's frame (metres); null keeps the gripper's."""
 
     quat: Vec4 | None = None
-    """Orientation (w, x, y, z) of the gripper root in the end-effector body's frame; null keeps the gripper's."""
+    """Orientation (w, x, y, z) of the gripper root in the end-effector body's frame; null keeps it."""
 
 
 class JointGroups(StrictModel):
@@ -148,9 +148,9 @@ class RobotSpec(PartSpec):
         """The arms, right first."""
         return ("right",) if self.arm_type == "single" else ("right", "left")
 
-    def eef_body(self, arm: Arm) -> str:
+    def eef_body(self, arm: str) -> str:
         """The end-effector body of ``arm`` as named in the MJCF."""
-        return self.eef_bodies.get(arm, f"{arm}_hand")
+        return self.eef_bodies.get(arm, f"{arm}_hand")  # type: ignore[call-overload, no-any-return]
 
     def resolve_base_xpos_offset(self, arena: str, **variables: float) -> tuple[float, float, float]:
         """The base offset for ``arena`` with expression variables bound (e.g. ``table_length=0.8``)."""
