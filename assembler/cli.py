@@ -12,6 +12,8 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from pydantic.json_schema import models_json_schema
+
 from assembler.assembly import DEFAULT, assemble
 from assembler.catalog import add_spec_folders, register_specs
 from assembler.errors import AssemblerError, Problem
@@ -27,7 +29,7 @@ from assembler.registry import (
     robot_class,
 )
 from assembler.scene import load_scene
-from assembler.schema import JOINT_RULE_ATTRIBUTES, RobotSpec
+from assembler.schema import JOINT_RULE_ATTRIBUTES, BaseSpec, GripperSpec, RobotSpec, SceneSpec
 
 
 def _robot_name(reference: str) -> str:
@@ -168,10 +170,17 @@ def command_inspect(args: argparse.Namespace) -> int:
     return 0
 
 
-def robot_spec_json_schema() -> dict[str, object]:
-    """The JSON Schema of robot spec files, as editors and review bots consume it."""
-    schema = RobotSpec.model_json_schema()
-    return {"$schema": "https://json-schema.org/draft/2020-12/schema", **schema}
+def spec_json_schema() -> dict[str, object]:
+    """The JSON Schema of every spec file (robot, base, gripper, scene), for editors and review bots."""
+    models = (RobotSpec, BaseSpec, GripperSpec, SceneSpec)
+    _, schema = models_json_schema([(m, "validation") for m in models], ref_template="#/$defs/{model}")
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "robot-assembler spec",
+        "description": "A robot, base, gripper or scene spec; `kind` says which (robot if absent).",
+        "anyOf": [{"$ref": f"#/$defs/{m.__name__}"} for m in models],
+        **schema,
+    }
 
 
 def command_scene(args: argparse.Namespace) -> int:
@@ -188,7 +197,7 @@ def command_scene(args: argparse.Namespace) -> int:
 
 
 def command_schema(args: argparse.Namespace) -> int:
-    print(json.dumps(robot_spec_json_schema(), indent=2))
+    print(json.dumps(spec_json_schema(), indent=2))
     return 0
 
 
@@ -242,7 +251,7 @@ def build_parser() -> argparse.ArgumentParser:
     inspect.add_argument("--format", choices=("text", "json"), default="text")
     inspect.set_defaults(run=command_inspect)
 
-    schema = commands.add_parser("schema", help="print the JSON Schema of robot specs")
+    schema = commands.add_parser("schema", help="print the JSON Schema of spec files")
     schema.set_defaults(run=command_schema)
     return parser
 

@@ -115,19 +115,24 @@ def test_inspect_json(capsys: pytest.CaptureFixture[str]) -> None:
     }
 
 
-def test_schema_is_json_schema_with_every_field_documented(
-    capsys: pytest.CaptureFixture[str],
-) -> None:
+def test_schema_is_json_schema_with_every_field_documented(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = run(capsys, "schema")
     schema = json.loads(out)
     assert code == 0 and schema["$schema"].startswith("https://json-schema.org/")
-    assert schema["additionalProperties"] is False
-    assert schema["required"] == ["name", "mjcf"]
-    undocumented = [name for name, field in schema["properties"].items() if not field.get("description")]
-    for definition in schema["$defs"].values():
-        undocumented += [
-            name for name, field in definition.get("properties", {}).items() if not field.get("description")
-        ]
+    assert [ref["$ref"] for ref in schema["anyOf"]] == [
+        "#/$defs/RobotSpec",
+        "#/$defs/BaseSpec",
+        "#/$defs/GripperSpec",
+        "#/$defs/SceneSpec",
+    ]
+    robot = schema["$defs"]["RobotSpec"]
+    assert robot["additionalProperties"] is False and robot["required"] == ["name", "mjcf"]
+    undocumented = [
+        f"{name}.{field}"
+        for name, definition in schema["$defs"].items()
+        for field, body in definition.get("properties", {}).items()
+        if not body.get("description")
+    ]
     assert undocumented == []
 
 
