@@ -62,6 +62,10 @@ class MjcfError(AssemblerError):
     """An MJCF file or asset cannot be read, or MuJoCo refuses to compile the assembly."""
 
 
+class MissingPackageError(MjcfError):
+    """A spec points into a Python package (``package://``) that is not installed."""
+
+
 class RegistryError(AssemblerError):
     """A name is unknown to a registry, or two definitions claim the same name."""
 

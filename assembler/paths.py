@@ -10,7 +10,7 @@ from __future__ import annotations
 import importlib.util
 from pathlib import Path
 
-from assembler.errors import MjcfError
+from assembler.errors import MissingPackageError, MjcfError
 
 PACKAGE_SCHEME = "package://"
 
@@ -76,7 +76,9 @@ def locate_model_file(reference: str) -> Path:
         root = package_root(package)
         if root is None:
             extra = ' (pip install "robot-assembler[robosuite]")' if package == "robosuite" else ""
-            raise MjcfError(f"{reference}: Python package '{package}' is not installed; install it{extra}")
+            raise MissingPackageError(
+                f"{reference}: Python package '{package}' is not installed; install it{extra}"
+            )
         path = root / inner
     else:
         path = Path(reference)

@@ -28,7 +28,8 @@ def test_list_shows_robots_with_morphology_and_dof(capsys: pytest.CaptureFixture
 
 def test_validate_shipped_specs_exits_zero(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, err = run(capsys, "validate", str(shipped_specs_dir()))
-    assert (code, err) == (0, "")
+    assert code == 0
+    assert all(line.startswith("note: ") for line in err.splitlines())  # robosuite may be absent
     assert "Sparrow7" in out
 
 
@@ -163,7 +164,12 @@ def test_bad_gripper_choice_is_one_line(capsys: pytest.CaptureFixture[str]) -> N
 
 def test_list_bases_and_grippers(capsys: pytest.CaptureFixture[str]) -> None:
     _, out, _ = run(capsys, "list", "bases")
-    assert {line.split()[0]: line.split()[1] for line in out.splitlines()[1:]} == {
+    listed = {line.split()[0]: line.split()[1] for line in out.splitlines()[1:]}
+    assert {
+        name: kind
+        for name, kind in listed.items()
+        if name in {"Pedestal", "QuadrupedBase", "RoverBase", "SiteOnlyBase"}
+    } == {
         "Pedestal": "mount",
         "QuadrupedBase": "legged",
         "RoverBase": "mobile",

@@ -44,9 +44,9 @@ def test_readme_commands_are_the_two_documented_ones() -> None:
     commands = _blocks("bash")
     assert commands == [
         "pip install . && assembler build Sparrow7 -o sparrow7.xml\n",
-        'pip install -e ".[test]" && pytest\n',
+        'pip install -e ".[test,robosuite]" && pytest\n',
     ]
-    assert 'pip install -e ".[test]" && pytest' in (ROOT / ".ci" / "run").read_text()
+    assert 'pip install -e ".[test,robosuite]" && pytest' in (ROOT / ".ci" / "run").read_text()
 
 
 def test_public_api_names_exist() -> None:

@@ -97,7 +97,8 @@ class PartModel(metaclass=RegisteringMeta):
             return load_mjcf(self.spec.mjcf)
         except MjcfError as error:
             where = self.locate(("mjcf",))
-            raise MjcfError([Problem(p.message, where, "mjcf") for p in error.problems]) from None
+            located = [Problem(p.message, where, "mjcf") for p in error.problems]
+            raise type(error)(located) from None
 
     def _removed_joints(self) -> list[str]:
         patterns: list[str] = list(getattr(self.spec, "remove_actuation", []))

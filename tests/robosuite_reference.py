@@ -1,0 +1,142 @@
+"""robosuite as the oracle: assemble a robot the way ``robosuite.robots.Robot.load_model`` does,
+and compare two compiled models field by field (names, tree, poses, joints, actuators, geoms,
+inertia) with a relative tolerance. The parity tests use it; it needs robosuite installed.
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+
+TOLERANCE = 1e-6
+"""Relative tolerance of every numeric comparison (the parity issue's figure)."""
+
+
+def robosuite_model(
+    robot: str, base: str | None = "default", grippers: dict[str, str | None] | None = None, idn: int = 0
+) -> mujoco.MjModel:
+    """robosuite's compiled model: default base, default gripper per arm with the robot's gripper
+    mount offsets, as ``Robot.load_model`` assembles it (robots/robot.py:161-223)."""
+    from robosuite.models.bases import robot_base_factory
+    from robosuite.models.grippers import gripper_factory
+    from robosuite.models.robots import create_robot
+    from robosuite.utils.mjcf_utils import array_to_string
+
+    model = create_robot(robot, idn=idn)
+    base_name = model.default_base if base == "default" else base
+    if base_name is not None:
+        model.add_base(robot_base_factory(base_name, idn=idn))
+    for arm in model.arms:
+        name = (grippers or {}).get(arm, model.default_gripper[arm])
+        gripper = gripper_factory(name, idn=f"{idn}_{arm}")
+        root = gripper.worldbody.find("body")
+        if arm in model.gripper_mount_pos_offset:
+            root.set("pos", array_to_string(model.gripper_mount_pos_offset[arm]))
+        if arm in model.gripper_mount_quat_offset:
+            root.set("quat", array_to_string(model.gripper_mount_quat_offset[arm]))
+        model.add_gripper(gripper, model.eef_name[arm])
+    return mujoco.MjModel.from_xml_string(model.get_xml())
+
+
+def _names(model: mujoco.MjModel, kind: mujoco.mjtObj, count: int) -> list[str]:
+    return [mujoco.mj_id2name(model, kind, i) or f"#{i}" for i in range(count)]
+
+
+def _close(a: np.ndarray, b: np.ndarray) -> bool:
+    return a.shape == b.shape and bool(np.allclose(a, b, rtol=TOLERANCE, atol=TOLERANCE * 1e-3))
+
+
+def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> list[str]:
+    """Every way ``ours`` differs from ``reference``, one readable line each (empty: equal)."""
+    found: list[str] = []
+    for size in ("nq", "nv", "nu", "nbody", "njnt", "ngeom", "nsite"):
+        if getattr(ours, size) != getattr(reference, size):
+            found.append(f"{size}: {getattr(ours, size)} != {getattr(reference, size)}")
+
+    bodies = _names(ours, mujoco.mjtObj.mjOBJ_BODY, ours.nbody)
+    reference_bodies = _names(reference, mujoco.mjtObj.mjOBJ_BODY, reference.nbody)
+    if set(bodies) != set(reference_bodies):
+        found.append(f"bodies only ours: {sorted(set(bodies) - set(reference_bodies))}")
+        found.append(f"bodies only robosuite: {sorted(set(reference_bodies) - set(bodies))}")
+        return found
+
+    def parent(model: mujoco.MjModel, name: str) -> str:
+        return str(model.body(model.body(name).parentid[0]).name)
+
+    ours_data, reference_data = mujoco.MjData(ours), mujoco.MjData(reference)
+    mujoco.mj_kinematics(ours, ours_data)
+    mujoco.mj_kinematics(reference, reference_data)
+    for name in bodies[1:]:
+        a, b = ours.body(name), reference.body(name)
+        if parent(ours, name) != parent(reference, name):
+            found.append(f"body {name}: parent {parent(ours, name)} != {parent(reference, name)}")
+        for field in ("mass", "inertia", "ipos"):
+            if not _close(getattr(a, field), getattr(b, field)):
+                found.append(f"body {name}: {field} {getattr(a, field)} != {getattr(b, field)}")
+        if not _close(ours_data.body(name).xpos, reference_data.body(name).xpos):
+            found.append(f"body {name}: world position differs")
+        if not _close(ours_data.body(name).xmat, reference_data.body(name).xmat):
+            found.append(f"body {name}: world orientation differs")
+        geoms = _body_geoms(ours, a.id)
+        reference_geoms = _body_geoms(reference, b.id)
+        if geoms != reference_geoms:
+            found.append(f"body {name}: geoms differ ({len(geoms)} vs {len(reference_geoms)})")
+
+    for name in _names(reference, mujoco.mjtObj.mjOBJ_SITE, reference.nsite):
+        if mujoco.mj_name2id(ours, mujoco.mjtObj.mjOBJ_SITE, name) < 0:
+            found.append(f"site {name}: missing")
+        elif not _close(ours_data.site(name).xpos, reference_data.site(name).xpos):
+            found.append(f"site {name}: world position differs")
+
+    joints = _names(ours, mujoco.mjtObj.mjOBJ_JOINT, ours.njnt)
+    if joints != _names(reference, mujoco.mjtObj.mjOBJ_JOINT, reference.njnt):
+        found.append("joint names or order differ")
+    else:
+        for name in joints:
+            a, b = ours.joint(name), reference.joint(name)
+            for field in ("type", "axis", "range", "armature", "damping", "frictionloss", "limited"):
+                if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
+                    found.append(f"joint {name}: {field} {getattr(a, field)} != {getattr(b, field)}")
+
+    actuators = _names(ours, mujoco.mjtObj.mjOBJ_ACTUATOR, ours.nu)
+    if actuators != _names(reference, mujoco.mjtObj.mjOBJ_ACTUATOR, reference.nu):
+        found.append("actuator names or order differ")
+    else:
+        for name in actuators:
+            a, b = ours.actuator(name), reference.actuator(name)
+            for field in (
+                "trntype",
+                "trnid",
+                "gear",
+                "ctrlrange",
+                "forcerange",
+                "gainprm",
+                "biasprm",
+                "ctrllimited",
+            ):
+                if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
+                    found.append(f"actuator {name}: {field} differs")
+    return found
+
+
+def _body_geoms(model: mujoco.MjModel, body: int) -> list[tuple[float, ...]]:
+    """The body's geoms as comparable tuples (type, size, pos, contype, conaffinity, group, rgba)."""
+    rows = []
+    for geom in np.flatnonzero(model.geom_bodyid == body):
+        rows.append(
+            tuple(
+                np.round(
+                    np.concatenate(
+                        [
+                            [model.geom_type[geom]],
+                            model.geom_size[geom],
+                            model.geom_pos[geom],
+                            [model.geom_contype[geom], model.geom_conaffinity[geom], model.geom_group[geom]],
+                            model.geom_rgba[geom],
+                        ]
+                    ),
+                    9,
+                )
+            )
+        )
+    return sorted(rows)
