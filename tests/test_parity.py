@@ -14,9 +14,9 @@ from tests.robosuite_reference import differences, robosuite_model
 
 pytest.importorskip("robosuite", reason='parity needs robosuite: pip install ".[test,robosuite]"')
 
-CASES = [
-    pytest.param("Panda", "default", None, id="Panda"),
-]
+ROBOTS_WITH_DEFAULTS = ["Panda", "Sawyer"]
+
+CASES = [pytest.param(robot, "default", None, id=robot) for robot in ROBOTS_WITH_DEFAULTS]
 
 DEVIATIONS: dict[str, list[str]] = {}
 """Per case id, the differences we keep on purpose (each explained in docs/robosuite-parity.md)."""
