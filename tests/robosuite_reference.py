@@ -88,34 +88,30 @@ def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> list[str]:
         elif not _close(ours_data.site(name).xpos, reference_data.site(name).xpos):
             found.append(f"site {name}: world position differs")
 
-    joints = _names(ours, mujoco.mjtObj.mjOBJ_JOINT, ours.njnt)
-    if joints != _names(reference, mujoco.mjtObj.mjOBJ_JOINT, reference.njnt):
-        found.append("joint names or order differ")
-    else:
-        for name in joints:
-            a, b = ours.joint(name), reference.joint(name)
-            for field in ("type", "axis", "range", "armature", "damping", "frictionloss", "limited"):
-                if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
-                    found.append(f"joint {name}: {field} {getattr(a, field)} != {getattr(b, field)}")
+    found += _named_fields(ours, reference, "joint", JOINT_FIELDS)
+    found += _named_fields(ours, reference, "actuator", ACTUATOR_FIELDS)
+    return found
 
-    actuators = _names(ours, mujoco.mjtObj.mjOBJ_ACTUATOR, ours.nu)
-    if actuators != _names(reference, mujoco.mjtObj.mjOBJ_ACTUATOR, reference.nu):
-        found.append("actuator names or order differ")
-    else:
-        for name in actuators:
-            a, b = ours.actuator(name), reference.actuator(name)
-            for field in (
-                "trntype",
-                "trnid",
-                "gear",
-                "ctrlrange",
-                "forcerange",
-                "gainprm",
-                "biasprm",
-                "ctrllimited",
-            ):
-                if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
-                    found.append(f"actuator {name}: {field} differs")
+
+JOINT_FIELDS = ("type", "axis", "range", "armature", "damping", "frictionloss", "limited")
+ACTUATOR_FIELDS = ("trntype", "trnid", "gear", "ctrlrange", "forcerange", "gainprm", "biasprm", "ctrllimited")
+_KINDS = {"joint": (mujoco.mjtObj.mjOBJ_JOINT, "njnt"), "actuator": (mujoco.mjtObj.mjOBJ_ACTUATOR, "nu")}
+
+
+def _named_fields(
+    ours: mujoco.MjModel, reference: mujoco.MjModel, kind: str, fields: tuple[str, ...]
+) -> list[str]:
+    """Same names in the same order, then each field of each element within tolerance."""
+    obj, count = _KINDS[kind]
+    names = _names(ours, obj, getattr(ours, count))
+    if names != _names(reference, obj, getattr(reference, count)):
+        return [f"{kind} names or order differ"]
+    found = []
+    for name in names:
+        a, b = getattr(ours, kind)(name), getattr(reference, kind)(name)
+        for field in fields:
+            if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
+                found.append(f"{kind} {name}: {field} {getattr(a, field)} != {getattr(b, field)}")
     return found
 
 

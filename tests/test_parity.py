@@ -7,6 +7,7 @@ demonstrably wrong, listed in docs/robosuite-parity.md, and checked here exactly
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import assembler
@@ -32,3 +33,12 @@ def test_parity_with_robosuite(
     reference = robosuite_model(robot, base=base, grippers=grippers)
     case = request.node.callspec.id
     assert differences(ours, reference) == DEVIATIONS.get(case, [])
+
+
+def test_the_oracle_notices_a_changed_joint_and_a_moved_gripper() -> None:
+    robot = assembler.assemble("Panda", idn=0)
+    robot.set_joint_attribute("damping", np.full(robot.dof, 0.3))
+    robot.mjspec.body("gripper0_right_right_gripper").pos = [0.0, 0.0, 0.01]
+    found = differences(robot.get_model(), robosuite_model("Panda"))
+    assert "joint robot0_joint1: damping [0.3] != [0.1]" in found
+    assert "body gripper0_right_right_gripper: world position differs" in found
