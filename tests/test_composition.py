@@ -238,3 +238,12 @@ LEGGED_ARM = """\
   </sensor>
 </mujoco>
 """
+
+
+def test_a_part_with_its_own_options_leaves_no_log_file(parts: Path, tmp_path: Path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    # the gripper's <option timestep="0.001"> differs from the robot's: MuJoCo would warn and write
+    # MUJOCO_LOG.TXT into the working directory if the assembler let the conflict reach it
+    monkeypatch.chdir(tmp_path)
+    robot = assembler.assemble("TwoLink", grippers={"right": "TestPinch"})
+    assert robot.get_model().opt.timestep == 0.002
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()

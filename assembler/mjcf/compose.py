@@ -27,8 +27,14 @@ def attach(
     frame: mujoco.MjsFrame,
     prefix: str,
 ) -> None:
-    """Attach a whole part under ``frame`` with ``prefix``; the assembly's model-wide options win
-    (MuJoCo reports the conflicts at compile time; see :func:`assembler.mjcf.keyframe.compile_with_home`)."""
+    """Attach a whole part under ``frame`` with ``prefix``; the assembly's model-wide options win.
+
+    robosuite never merges a part's <option>/<visual> either. The part takes the assembly's values
+    before attaching, so MuJoCo sees no conflict: otherwise it warns at compile time and appends
+    the warning to MUJOCO_LOG.TXT in the user's working directory.
+    """
+    part.option = assembly.option
+    part.visual = assembly.visual
     assembly.attach(part, frame=frame, prefix=prefix)
 
 

@@ -8,7 +8,6 @@ control that holds them there. The result is written back to the spec so emitted
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Mapping
 
 import mujoco
@@ -57,11 +56,7 @@ def compile_with_home(spec: mujoco.MjSpec, home: Mapping[str, float], what: str)
     """Compile ``spec`` with a ``home`` keyframe at the given joint positions (others at qpos0)."""
     key = _home_key(spec)
     try:
-        with warnings.catch_warnings():
-            # Parts' own <option>/<compiler> values lose to the assembly's, as in robosuite (which
-            # never merges them); MuJoCo reports each such conflict when compiling.
-            warnings.filterwarnings("ignore", message="Attach conflict")
-            model = spec.compile()
+        model = spec.compile()
     except ValueError as error:
         message = " ".join(str(error).split()).removeprefix("Error: ")
         raise MjcfError(f"{what}: MuJoCo cannot compile the assembly: {message}") from None

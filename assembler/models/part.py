@@ -15,6 +15,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import Location, MjcfError, Problem, SpecError, summarize_names
+from assembler.mjcf import compose
+from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.removal import remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.mjcf.structure import root_body_name
@@ -169,9 +171,6 @@ class PartModel(metaclass=RegisteringMeta):
 
     def compile_alone(self) -> mujoco.MjModel:
         """Compile this part on its own (as ``assembler validate --compile`` does for bases and grippers)."""
-        from assembler.mjcf import compose
-        from assembler.mjcf.keyframe import compile_with_home
-
         assembly = compose.new_assembly(self.source.globals_xml)
         compose.attach_at_world(assembly, self.part_spec(), self.naming_prefix)
         where = self.loaded.source if self.loaded is not None else type(self).__qualname__
