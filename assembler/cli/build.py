@@ -1,0 +1,34 @@
+"""``assembler build``: write a robot's standalone MJCF (to a file, a bundle folder or stdout)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from assembler.cli.common import add_assembly_arguments, assembled
+from assembler.mjcf.emit import bundle
+from assembler.paths import display_path
+
+
+def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = commands.add_parser("build", help="write a robot's standalone MJCF")
+    add_assembly_arguments(parser)
+    parser.add_argument("-o", "--output", help="output XML file (default: standard output)")
+    parser.add_argument("--bundle", metavar="DIR", help="write the XML and copies of its assets to DIR")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    robot = assembled(args)
+    if args.bundle:
+        name = Path(args.output).name if args.output else f"{type(robot).__name__}.xml"
+        robot.get_model()  # compile first: a robot that does not compile writes nothing
+        target = bundle(robot.mjspec, Path(args.bundle), name)
+        print(f"wrote {display_path(target)} with its assets", file=sys.stderr)
+    elif args.output:
+        target = robot.save(args.output)
+        print(f"wrote {display_path(target)}", file=sys.stderr)
+    else:
+        sys.stdout.write(robot.get_xml())
+    return 0

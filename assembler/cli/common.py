@@ -1,0 +1,76 @@
+"""What several commands share: finding a robot from a name or a spec file, the build flags,
+and printing aligned tables."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+from pathlib import Path
+
+from assembler.assembly import DEFAULT, assemble
+from assembler.catalog import register_specs
+from assembler.errors import AssemblerError
+from assembler.loader import SPEC_SUFFIXES
+from assembler.models import RobotModel
+from assembler.registry import create_robot, robot_class
+
+
+def robot_name(reference: str) -> str:
+    """A registered robot name, registering the spec first when given a spec file path."""
+    if reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file():
+        (cls, *_) = register_specs(reference)
+        return cls.__name__
+    return reference
+
+
+def bare_robot(reference: str, idn: int) -> RobotModel:
+    """A robot alone (no base, no grippers), by registered name or spec file."""
+    return create_robot(robot_name(reference), idn=idn)
+
+
+def add_assembly_arguments(parser: argparse.ArgumentParser) -> None:
+    """The flags that choose what is assembled: robot, idn, base and grippers."""
+    parser.add_argument("robot", help="registered robot name or spec file")
+    parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
+    parser.add_argument("--base", help="a registered base instead of the robot's default")
+    parser.add_argument("--no-base", action="store_true", help="no base at all")
+    parser.add_argument(
+        "--gripper",
+        action="append",
+        default=[],
+        metavar="ARM=NAME",
+        help="gripper per arm (NAME may be none)",
+    )
+    parser.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
+
+
+def gripper_choices(values: list[str]) -> dict[str, str | None]:
+    """``--gripper ARM=NAME`` flags as a mapping (``none`` means no gripper on that arm)."""
+    choices: dict[str, str | None] = {}
+    for value in values:
+        arm, sep, name = value.partition("=")
+        if not sep or not arm or not name:
+            raise AssemblerError(
+                f"--gripper expects ARM=NAME (e.g. right=PincerGripper or left=none), got '{value}'"
+            )
+        choices[arm] = None if name.lower() == "none" else name
+    return choices
+
+
+def assembled(args: argparse.Namespace) -> RobotModel:
+    """The robot the assembly flags describe: its default base and grippers unless they say otherwise."""
+    name = robot_name(args.robot)
+    base = None if args.no_base else (args.base or DEFAULT)
+    grippers = gripper_choices(args.gripper)
+    if args.no_grippers:
+        arms = getattr(robot_class(name).spec, "arms", ())
+        grippers = {arm: None for arm in arms}
+    return assemble(name, idn=args.idn, base=base, grippers=grippers)
+
+
+def table(rows: Sequence[Sequence[str]]) -> str:
+    """Rows as left-aligned columns, two spaces apart."""
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+    return "\n".join(
+        "  ".join(cell.ljust(width) for cell, width in zip(row, widths, strict=True)).rstrip() for row in rows
+    )

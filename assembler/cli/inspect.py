@@ -1,0 +1,48 @@
+"""``assembler inspect``: every joint parameter of a robot and where each value came from."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from assembler.cli.common import bare_robot, table
+from assembler.paths import display_path
+from assembler.schema import JOINT_RULE_ATTRIBUTES
+
+
+def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = commands.add_parser("inspect", help="joint parameters and where each value came from")
+    parser.add_argument("robot", help="registered robot name or spec file")
+    parser.add_argument("--idn", type=int, default=0)
+    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    robot = bare_robot(args.robot, args.idn)
+    if args.format == "json":
+        joints = {
+            robot.naming_prefix + joint: {
+                a: {"value": v.value, "source": v.source} for a, v in values.items()
+            }
+            for joint, values in robot.joint_values.items()
+        }
+        print(json.dumps({"robot": type(robot).__name__, "dof": robot.dof, "joints": joints}, indent=2))
+        return 0
+    loaded = type(robot).loaded
+    print(f"{type(robot).__name__}: {robot.spec.morphology}, {robot.dof} dof, prefix {robot.naming_prefix}")
+    if loaded is not None:
+        print(f"spec: {loaded.source}")
+    print(f"mjcf: {display_path(robot.source.path)}")
+    attributes = list(JOINT_RULE_ATTRIBUTES) + sorted(
+        {a for values in robot.joint_values.values() for a in values} - set(JOINT_RULE_ATTRIBUTES)
+    )
+    rows = [["joint", *attributes]]
+    for joint, values in robot.joint_values.items():
+        cells = [robot.naming_prefix + joint]
+        for attribute in attributes:
+            value = values.get(attribute)
+            cells.append(f"{value.value:.6g}  {value.source}" if value else "-  (MuJoCo default)")
+        rows.append(cells)
+    print(table(rows))
+    return 0

@@ -1,0 +1,31 @@
+"""``assembler scene``: several placed robots from a scene YAML, in one MJCF."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from assembler.mjcf.emit import to_xml, write_atomically
+from assembler.paths import display_path
+from assembler.scene import load_scene
+
+
+def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = commands.add_parser("scene", help="several placed robots in one MJCF")
+    parser.add_argument("scene", help="scene YAML file")
+    parser.add_argument("-o", "--output", help="output XML file (default: standard output)")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    scene.get_model()  # compile first: a scene that does not compile writes nothing
+    xml = to_xml(scene.mjspec)
+    if args.output:
+        write_atomically(Path(args.output), xml)
+        names = ", ".join(robot.name for robot in scene.robots)
+        print(f"wrote {display_path(args.output)} ({names})", file=sys.stderr)
+    else:
+        sys.stdout.write(xml)
+    return 0
