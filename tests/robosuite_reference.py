@@ -60,25 +60,34 @@ def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> list[str]:
         found.append(f"bodies only robosuite: {sorted(set(reference_bodies) - set(bodies))}")
         return found
 
-    def parent(model: mujoco.MjModel, name: str) -> str:
-        return str(model.body(model.body(name).parentid[0]).name)
+    if len(set(bodies)) != len(bodies):
+        found.append("bodies: unnamed bodies in different places, cannot pair them")
+        return found
+    reference_ids = {name: i for i, name in enumerate(reference_bodies)}
+
+    def parent(model: mujoco.MjModel, names: list[str], body: int) -> str:
+        return names[model.body_parentid[body]]
 
     ours_data, reference_data = mujoco.MjData(ours), mujoco.MjData(reference)
     mujoco.mj_kinematics(ours, ours_data)
     mujoco.mj_kinematics(reference, reference_data)
-    for name in bodies[1:]:
-        a, b = ours.body(name), reference.body(name)
-        if parent(ours, name) != parent(reference, name):
-            found.append(f"body {name}: parent {parent(ours, name)} != {parent(reference, name)}")
+    # Unnamed bodies ("#13") pair by their index among the bodies; both sides keep them unnamed.
+    for i, name in enumerate(bodies[1:], start=1):
+        j = reference_ids[name]
+        a, b = ours.body(i), reference.body(j)
+        if parent(ours, bodies, i) != parent(reference, reference_bodies, j):
+            found.append(
+                f"body {name}: parent {parent(ours, bodies, i)} != {parent(reference, reference_bodies, j)}"
+            )
         for field in ("mass", "inertia", "ipos"):
             if not _close(getattr(a, field), getattr(b, field)):
                 found.append(f"body {name}: {field} {getattr(a, field)} != {getattr(b, field)}")
-        if not _close(ours_data.body(name).xpos, reference_data.body(name).xpos):
+        if not _close(ours_data.xpos[i], reference_data.xpos[j]):
             found.append(f"body {name}: world position differs")
-        if not _close(ours_data.body(name).xmat, reference_data.body(name).xmat):
+        if not _close(ours_data.xmat[i], reference_data.xmat[j]):
             found.append(f"body {name}: world orientation differs")
-        geoms = _body_geoms(ours, a.id)
-        reference_geoms = _body_geoms(reference, b.id)
+        geoms = _body_geoms(ours, i)
+        reference_geoms = _body_geoms(reference, j)
         if geoms != reference_geoms:
             found.append(f"body {name}: geoms differ ({len(geoms)} vs {len(reference_geoms)})")
 

@@ -11,19 +11,25 @@ from __future__ import annotations
 import functools
 import os
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import mujoco
+from pydantic import TypeAdapter
 
-from assembler.errors import MjcfError
+from assembler.errors import MjcfError, Problem
 from assembler.mjcf.authored import authored_attributes
+from assembler.mjcf.fixes import apply_fixes
 from assembler.paths import display_path, locate_model_file
+from assembler.schema.fixes import MjcfFix
 
 GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "statistic")
 """Model-wide sections a standalone robot keeps from its own file (e.g. its integrator)."""
 
 DIRECTORY_ATTRIBUTES: tuple[str, ...] = ("meshdir", "texturedir", "assetdir")
+
+_FIXES = TypeAdapter(list[MjcfFix])
 
 
 @dataclass(frozen=True)
@@ -93,16 +99,29 @@ def _unnamed_joints(spec: mujoco.MjSpec) -> list[str]:
     ]
 
 
-@functools.lru_cache(maxsize=64)
-def _load(path: Path, mtime_ns: int, size: int) -> MjcfSource:
+def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjSpec]:
+    """The file's XML tree and MjSpec, after its declared repairs."""
     shown = display_path(path)
     try:
         root = ET.parse(path).getroot()
-        spec = mujoco.MjSpec.from_file(str(path))
+        if not fixes:
+            return root, mujoco.MjSpec.from_file(str(path))
+        stale = apply_fixes(root, fixes)
+        if stale:
+            raise MjcfError([Problem(f"{shown}: {line}") for line in stale])
+        # Parsed from text: asset paths stay relative and are resolved against the file's folder below.
+        return root, mujoco.MjSpec.from_string(ET.tostring(root, encoding="unicode"))
     except ET.ParseError as error:
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     except ValueError as error:
-        raise MjcfError(f"{shown}: MuJoCo cannot read it: {str(error).strip()}") from None
+        hint = " (a spec can declare a repair: mjcf_fixes)" if "XML Error" in str(error) else ""
+        raise MjcfError(f"{shown}: MuJoCo cannot read it: {' '.join(str(error).split())}{hint}") from None
+
+
+@functools.lru_cache(maxsize=64)
+def _load(path: Path, mtime_ns: int, size: int, fixes_json: str) -> MjcfSource:
+    shown = display_path(path)
+    root, spec = _parse(path, _FIXES.validate_json(fixes_json))
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
@@ -117,8 +136,9 @@ def _load(path: Path, mtime_ns: int, size: int) -> MjcfSource:
     )
 
 
-def load_mjcf(reference: str) -> MjcfSource:
-    """The parsed MJCF behind a spec's ``mjcf`` reference; re-read only when the file changes."""
+def load_mjcf(reference: str, fixes: Sequence[MjcfFix] = ()) -> MjcfSource:
+    """The parsed MJCF behind a spec's ``mjcf`` reference, repaired as the spec declares; re-read
+    only when the file or the repairs change."""
     path = locate_model_file(reference).resolve()
     stat = path.stat()
-    return _load(path, stat.st_mtime_ns, stat.st_size)
+    return _load(path, stat.st_mtime_ns, stat.st_size, _FIXES.dump_json(list(fixes)).decode())

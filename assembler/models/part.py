@@ -96,7 +96,7 @@ class PartModel(metaclass=RegisteringMeta):
 
     def _load_source(self) -> MjcfSource:
         try:
-            return load_mjcf(self.spec.mjcf)
+            return load_mjcf(self.spec.mjcf, self.spec.mjcf_fixes)
         except MjcfError as error:
             where = self.locate(("mjcf",))
             located = [Problem(p.message, where, "mjcf") for p in error.problems]

@@ -7,6 +7,7 @@ from typing import Annotated
 from pydantic import Field
 
 from assembler.schema.common import FiniteFloat, StrictModel
+from assembler.schema.fixes import MjcfFix
 from assembler.schema.joints import JointDefaults, JointOverride
 
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
@@ -32,6 +33,9 @@ class PartSpec(StrictModel):
 
     mjcf: str = Field(min_length=1)
     """The MJCF file: relative to this spec file, absolute, or 'package://<python package>/<path>'."""
+
+    mjcf_fixes: list[MjcfFix] = Field(default_factory=list)
+    """Declared repairs of an MJCF file we do not own, applied before MuJoCo reads it (each says why)."""
 
     init_qpos: list[FiniteFloat] | None = None
     """Initial positions of this part's joints, in MuJoCo's order; null keeps the MJCF's qpos0."""
