@@ -46,16 +46,35 @@ def _close(a: np.ndarray, b: np.ndarray) -> bool:
     return a.shape == b.shape and bool(np.allclose(a, b, rtol=TOLERANCE, atol=TOLERANCE * 1e-3))
 
 
-def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> list[str]:
-    """Every way ``ours`` differs from ``reference``, one readable line each (empty: equal)."""
+def differences(
+    ours: mujoco.MjModel, reference: mujoco.MjModel, renamed: dict[str, str | None] | None = None
+) -> list[str]:
+    """Every way ``ours`` differs from ``reference``, one readable line each (empty: equal).
+
+    ``renamed`` maps our body names to robosuite's for bodies we name differently on purpose, or to
+    None for a body robosuite does not have (its children are then compared as children of its
+    parent). Each entry that applies is reported as one difference; the rest is compared as usual.
+    """
     found: list[str] = []
     for size in ("nq", "nv", "nu", "nbody", "njnt", "ngeom", "nsite"):
         if getattr(ours, size) != getattr(reference, size):
             found.append(f"{size}: {getattr(ours, size)} != {getattr(reference, size)}")
 
     bodies = _names(ours, mujoco.mjtObj.mjOBJ_BODY, ours.nbody)
+    extra: set[int] = set()
+    for name, reference_name in (renamed or {}).items():
+        if name not in bodies:
+            continue
+        if reference_name is None:
+            extra.add(bodies.index(name))
+            found.append(f"body {name}: not in robosuite")
+        else:
+            bodies[bodies.index(name)] = reference_name
+            found.append(f"body {name}: named {reference_name} in robosuite")
+    if extra:
+        found = [line for line in found if not line.startswith("nbody:")]
     reference_bodies = _names(reference, mujoco.mjtObj.mjOBJ_BODY, reference.nbody)
-    if set(bodies) != set(reference_bodies):
+    if {b for i, b in enumerate(bodies) if i not in extra} != set(reference_bodies):
         found.append(f"bodies only ours: {sorted(set(bodies) - set(reference_bodies))}")
         found.append(f"bodies only robosuite: {sorted(set(reference_bodies) - set(bodies))}")
         return found
@@ -66,13 +85,18 @@ def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> list[str]:
     reference_ids = {name: i for i, name in enumerate(reference_bodies)}
 
     def parent(model: mujoco.MjModel, names: list[str], body: int) -> str:
-        return names[model.body_parentid[body]]
+        body = model.body_parentid[body]
+        while model is ours and body in extra:
+            body = model.body_parentid[body]
+        return names[body]
 
     ours_data, reference_data = mujoco.MjData(ours), mujoco.MjData(reference)
     mujoco.mj_kinematics(ours, ours_data)
     mujoco.mj_kinematics(reference, reference_data)
     # Unnamed bodies ("#13") pair by their index among the bodies; both sides keep them unnamed.
     for i, name in enumerate(bodies[1:], start=1):
+        if i in extra:
+            continue
         j = reference_ids[name]
         a, b = ours.body(i), reference.body(j)
         if parent(ours, bodies, i) != parent(reference, reference_bodies, j):
@@ -116,8 +140,8 @@ def _named_fields(
     if names != _names(reference, obj, getattr(reference, count)):
         return [f"{kind} names or order differ"]
     found = []
-    for name in names:
-        a, b = getattr(ours, kind)(name), getattr(reference, kind)(name)
+    for index, name in enumerate(names):  # by index: an unnamed free joint is "#0" on both sides
+        a, b = getattr(ours, kind)(index), getattr(reference, kind)(index)
         for field in fields:
             if not _close(np.asarray(getattr(a, field), float), np.asarray(getattr(b, field), float)):
                 found.append(f"{kind} {name}: {field} {getattr(a, field)} != {getattr(b, field)}")

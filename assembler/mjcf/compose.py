@@ -10,6 +10,7 @@ prefixed ``robot{idn}_manipulator_mount``); a new outer body keeps the robot roo
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import mujoco
 from numpy.typing import ArrayLike
@@ -96,18 +97,68 @@ def attach_robot_on_support(
             outer.add_freejoint()
     base.worldbody.first_body().pos = offset  # replaces the base root's own position
     attach(assembly, base, outer.add_frame(), base_prefix)
+    base_actuators = [actuator.name for actuator in assembly.actuators]
     support = find_body(assembly, base_prefix + support_body, "base support body")
 
+    move_world_elements(robot, assembly, robot_prefix)
     root.name = MANIPULATOR_MOUNT
     root.pos = [0.0, 0.0, 0.0]
     root.quat = [1.0, 0.0, 0.0, 0.0]
     root.explicitinertial = False
     root.mass = 0.0
     root.inertia = [0.0, 0.0, 0.0]
+    root.ipos = [0.0, 0.0, 0.0]
+    root.iquat = [1.0, 0.0, 0.0, 0.0]
     for joint in list(root.joints):
         if joint.type == FREE:
             robot.delete(joint)
     attach(assembly, robot, support.add_frame(), robot_prefix)
+    # robosuite appends a base's actuators after the robot's: keep that control order.
+    move_actuators_last(assembly, base_actuators)
+
+
+_NOT_COPIED = frozenset(
+    {"id", "signature", "info", "plugin", "classname", "name", "compiler", "parent", "frame", "material"}
+)
+"""Element properties that identify it, tie it to its spec, or cannot be set; the rest are copied."""
+
+
+def copy_properties(source: Any, target: Any) -> None:
+    """Copy every settable property of one MjSpec element onto a new element of the same kind
+    (MjSpec has no clone or reorder operation)."""
+    for field in dir(source):
+        if not field.startswith("_") and field not in _NOT_COPIED and not callable(getattr(source, field)):
+            setattr(target, field, getattr(source, field))
+
+
+def move_actuators_last(assembly: mujoco.MjSpec, names: Sequence[str]) -> None:
+    """Move the named actuators, in order, to the end of the actuator list."""
+    for name in names:
+        old = assembly.actuator(name)
+        new = assembly.add_actuator()
+        copy_properties(old, new)
+        assembly.delete(old)
+        new.name = name
+
+
+def move_world_elements(part: mujoco.MjSpec, assembly: mujoco.MjSpec, prefix: str) -> None:
+    """Keep a part's world-level geoms, sites, cameras and lights in the world (as robosuite does)
+    when its root body is attached somewhere else, e.g. under a mobile base's support body."""
+    world = assembly.worldbody
+    kinds = [
+        (part.worldbody.geoms, world.add_geom),
+        (part.worldbody.sites, world.add_site),
+        (part.worldbody.cameras, world.add_camera),
+        (part.worldbody.lights, world.add_light),
+    ]
+    for elements, add in kinds:
+        for element in list(elements):
+            copy = add()
+            copy_properties(element, copy)
+            copy.name = prefix + element.name if element.name else ""
+            if getattr(element, "material", ""):
+                copy.material = prefix + element.material
+            part.delete(element)
 
 
 def add_sites_at_world(assembly: mujoco.MjSpec, part: mujoco.MjSpec, prefix: str) -> None:

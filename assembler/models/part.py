@@ -16,18 +16,20 @@ from numpy.typing import NDArray
 
 from assembler.errors import Location, MjcfError, Problem, SpecError, summarize_names
 from assembler.mjcf import compose
+from assembler.mjcf.added_joints import add_joints
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.removal import remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.mjcf.structure import root_body_name
 from assembler.models.joint_rules import (
     JointTable,
+    JointValue,
     apply_default_rules,
     apply_overrides,
     matching_joints,
 )
 from assembler.registry import RegisteringMeta
-from assembler.schema import PartSpec
+from assembler.schema import JOINT_RULE_ATTRIBUTES, PartSpec
 from assembler.yaml_source import DataPath
 
 if TYPE_CHECKING:
@@ -128,6 +130,12 @@ class PartModel(metaclass=RegisteringMeta):
         remove_joints(spec, self._removed_joints())
         if getattr(self.spec, "remove_free_joint", False):
             remove_free_joints(spec)
+        try:
+            add_joints(spec, getattr(self.spec, "added_joints", []))
+        except MjcfError as error:
+            raise MjcfError(
+                [self.spec_problem(("added_joints",), p.message) for p in error.problems]
+            ) from None
         return spec
 
     def _resolve_joint_values(self) -> JointTable:
@@ -142,6 +150,10 @@ class PartModel(metaclass=RegisteringMeta):
         authored = [authored_by_name[n] for n in names]
         table = apply_default_rules(names, in_file, authored, self.spec.joint_defaults, self.locate)
         table = {name: values for name, values in table.items() if name in self._joint_names}
+        for index, added in enumerate(getattr(self.spec, "added_joints", [])):
+            source = f"spec added_joints[{index}]"
+            values = {a: float(getattr(added, a)) for a in JOINT_RULE_ATTRIBUTES}
+            table[added.name] = {a: JointValue(value, source) for a, value in values.items()}
         apply_overrides(table, self._joint_names, self.spec.joints, self.locate)
         return table
 

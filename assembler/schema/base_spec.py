@@ -6,6 +6,7 @@ from typing import Any, Literal
 
 from pydantic import Field, field_validator
 
+from assembler.schema.added_joints import AddedJoints
 from assembler.schema.common import NonNegativeFloat, Vec3
 from assembler.schema.parts import PartSpec
 
@@ -47,3 +48,6 @@ class BaseSpec(PartSpec):
 
     remove_free_joint: bool = False
     """Remove the base's free joint (a floating legged base becomes welded)."""
+
+    added_joints: AddedJoints = Field(default_factory=list)
+    """Joints added after the removals, e.g. planar mobile joints that make a legged base floating."""
