@@ -56,7 +56,7 @@ def differences(
     parent). Each entry that applies is reported as one difference; the rest is compared as usual.
     """
     found: list[str] = []
-    for size in ("nq", "nv", "nu", "nbody", "njnt", "ngeom", "nsite"):
+    for size in ("nq", "nv", "nu", "nbody", "njnt", "ngeom", "nsite", "ncam"):
         if getattr(ours, size) != getattr(reference, size):
             found.append(f"{size}: {getattr(ours, size)} != {getattr(reference, size)}")
 
@@ -91,8 +91,9 @@ def differences(
         return names[body]
 
     ours_data, reference_data = mujoco.MjData(ours), mujoco.MjData(reference)
-    mujoco.mj_kinematics(ours, ours_data)
-    mujoco.mj_kinematics(reference, reference_data)
+    for model, data in ((ours, ours_data), (reference, reference_data)):
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_camlight(model, data)
     # Unnamed bodies ("#13") pair by their index among the bodies; both sides keep them unnamed.
     for i, name in enumerate(bodies[1:], start=1):
         if i in extra:
@@ -114,6 +115,12 @@ def differences(
         reference_geoms = _body_geoms(reference, j)
         if geoms != reference_geoms:
             found.append(f"body {name}: geoms differ ({len(geoms)} vs {len(reference_geoms)})")
+
+    for name in _names(reference, mujoco.mjtObj.mjOBJ_CAMERA, reference.ncam):
+        if mujoco.mj_name2id(ours, mujoco.mjtObj.mjOBJ_CAMERA, name) < 0:
+            found.append(f"camera {name}: missing")
+        elif not _close(ours_data.cam(name).xpos, reference_data.cam(name).xpos):
+            found.append(f"camera {name}: world position differs")
 
     for name in _names(reference, mujoco.mjtObj.mjOBJ_SITE, reference.nsite):
         if mujoco.mj_name2id(ours, mujoco.mjtObj.mjOBJ_SITE, name) < 0:

@@ -50,17 +50,24 @@ DEVIATIONS_BY_BASE: dict[str, list[str]] = {
 }
 """robosuite swaps SpotFloating's forward and side axes (leg_base_model.py:59,69)."""
 
+DEVIATIONS_BY_CASE: dict[str, list[str]] = {
+    case: ["camera robot0_robotview: world position differs"] for case in ("IIWA+Spot", "IIWA+SpotFloating")
+}
+"""On a legged base robosuite moves only the root's first child body onto the support; IIWA's robotview
+camera, another child of its root, stays behind and no longer looks at the arm from where it should."""
+
 
 def _base_name(robot: str, base: str) -> str | None:
     return assembler.REGISTERED_ROBOTS[robot].spec.default_base if base == "default" else base
 
 
-def expected_deviations(robot: str, base: str) -> list[str]:
+def expected_deviations(robot: str, base: str, case: str) -> list[str]:
     name = _base_name(robot, base)
     if name is None:
         return []
     base_type = assembler.REGISTERED_BASES[name].spec.type
-    return DEVIATIONS_BY_BASE_TYPE.get(base_type, []) + DEVIATIONS_BY_BASE.get(name, [])
+    expected = DEVIATIONS_BY_BASE_TYPE.get(base_type, []) + DEVIATIONS_BY_BASE.get(name, [])
+    return sorted(expected + DEVIATIONS_BY_CASE.get(case, []))
 
 
 def test_every_robosuite_robot_gripper_and_base_has_a_spec() -> None:
@@ -77,7 +84,9 @@ def test_every_robosuite_robot_gripper_and_base_has_a_spec() -> None:
 
 
 @pytest.mark.parametrize(("robot", "base", "gripper"), CASES)
-def test_parity_with_robosuite(robot: str, base: str, gripper: str | None) -> None:
+def test_parity_with_robosuite(
+    robot: str, base: str, gripper: str | None, request: pytest.FixtureRequest
+) -> None:
     arms = assembler.REGISTERED_ROBOTS[robot].spec.arms
     grippers = dict.fromkeys(arms, gripper) if gripper else None
     ours = assembler.assemble(robot, idn=0, base=base, grippers=grippers).get_model()
@@ -87,7 +96,8 @@ def test_parity_with_robosuite(robot: str, base: str, gripper: str | None) -> No
     reference = robosuite_model(robot, base=base, grippers=reference_grippers)
     base_type = assembler.REGISTERED_BASES[name].spec.type if (name := _base_name(robot, base)) else None
     renamed = {MOUNT: None if base_type == "legged" else "manipulator_mount"}
-    assert differences(ours, reference, renamed) == expected_deviations(robot, base)
+    found = differences(ours, reference, renamed)
+    assert sorted(found) == expected_deviations(robot, base, request.node.callspec.id)
 
 
 def test_the_oracle_notices_a_changed_joint_and_a_moved_gripper() -> None:
