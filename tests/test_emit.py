@@ -135,3 +135,18 @@ def test_a_robot_that_does_not_compile_writes_nothing(write, tmp_path: Path) -> 
     with pytest.raises(MjcfError):
         cls(idn=0).save(target)
     assert target.read_text() == "previous build"
+
+
+def test_written_files_get_the_usual_permissions_and_overwrites_keep_theirs(tmp_path: Path) -> None:
+
+    fresh, kept = tmp_path / "fresh.xml", tmp_path / "kept.xml"
+    kept.write_text("old")
+    kept.chmod(0o640)
+    umask = os.umask(0o022)
+    try:
+        write_atomically(fresh, "<mujoco/>")
+        write_atomically(kept, "<mujoco/>")
+    finally:
+        os.umask(umask)
+    assert fresh.stat().st_mode & 0o777 == 0o644
+    assert kept.stat().st_mode & 0o777 == 0o640 and kept.read_text() == "<mujoco/>"

@@ -62,12 +62,27 @@ def to_xml(spec: mujoco.MjSpec) -> str:
         return str(spec.to_xml())
 
 
+def _current_umask() -> int:
+    mask = os.umask(0o022)  # reading the umask means setting it; put it back at once
+    os.umask(mask)
+    return mask
+
+
+def _mode_for(path: Path) -> int:
+    """An overwritten file keeps its permissions; a new one gets what ``open()`` would give it."""
+    try:
+        return path.stat().st_mode & 0o777
+    except FileNotFoundError:
+        return 0o666 & ~_current_umask()
+
+
 def write_atomically(path: Path, content: str | bytes) -> None:
     """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half."""
     path.parent.mkdir(parents=True, exist_ok=True)
     data = content.encode() if isinstance(content, str) else content
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
+        os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
             stream.flush()
@@ -80,6 +95,7 @@ def write_atomically(path: Path, content: str | bytes) -> None:
 
 def _copy_atomically(source: Path, target: Path) -> None:
     handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+    os.fchmod(handle, _mode_for(target))
     os.close(handle)
     try:
         shutil.copyfile(source, temporary)
