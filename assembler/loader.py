@@ -20,9 +20,9 @@ from typing import Any
 from pydantic import BaseModel, ValidationError
 
 from assembler.errors import AssemblerError, Location, Problem, SpecError, did_you_mean
-from assembler.paths import display_path, resolve_model_path
+from assembler.paths import confine, display_path, resolve_model_path
 from assembler.schema import SPEC_KINDS, PartSpec
-from assembler.yaml_source import DataPath, LocatedDocument, dotted, parse_yaml
+from assembler.yaml_source import DataPath, LocatedDocument, dotted, parse_yaml, read_yaml_text
 
 SPEC_SUFFIXES = (".yaml", ".yml")
 
@@ -55,26 +55,24 @@ ParentLookup = Callable[[str], LocatedDocument | None]
 
 def _read_document(path: Path) -> LocatedDocument:
     shown = display_path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as error:
-        raise SpecError(Problem(f"cannot read the file: {error.strerror}", Location(shown))) from None
-    try:
-        text = raw.decode("utf-8-sig")  # a byte-order mark is harmless; strip it
-    except UnicodeDecodeError as error:
-        raise SpecError(
-            Problem(f"the file is not UTF-8 text (byte {error.start})", Location(shown))
-        ) from None
-    document = parse_yaml(text, shown)
+    document = parse_yaml(read_yaml_text(path, shown), shown)
     _resolve_paths(document, path.parent.resolve())
     return document
 
 
 def _resolve_paths(document: LocatedDocument, base_dir: Path | None) -> None:
+    """Make file references absolute; each must stay in the spec's folder or a trusted one."""
+    problems: list[Problem] = []
     for key in PATH_FIELDS:
         value = document.data.get(key)
         if isinstance(value, str) and value:
-            document.data[key] = resolve_model_path(value, base_dir)
+            try:
+                document.data[key] = resolve_model_path(value, base_dir)
+            except SpecError as error:
+                where = document.marks.get((key, "<value>")) or document.location((key,))
+                problems.extend(Problem(p.message, where, key) for p in error.problems)
+    if problems:
+        raise SpecError(problems)
     document.data.setdefault("__dir__", str(base_dir) if base_dir else None)
 
 
@@ -125,7 +123,10 @@ class _Resolver:
         where = document.marks.get(("extends", "<value>")) or document.location(("extends",))
         if not isinstance(reference, str) or not reference:
             raise SpecError(Problem("expected a robot name or a spec file path", where, "extends"))
-        key = _inheritance_key(reference, document)
+        try:
+            key = _inheritance_key(reference, document)
+        except SpecError as error:  # a parent file outside the allowed folders
+            raise SpecError([Problem(p.message, where, "extends") for p in error.problems]) from None
         own = str(document.data.get("name") or document.file)
         if key in chain or key == own:
             members = [*chain[chain.index(key) :], own] if key in chain else [own]
@@ -154,7 +155,8 @@ class _Resolver:
         if found is None:
             from assembler.registry import registered_names
 
-            known = sorted({*self.batch, *registered_names()} - {child.data.get("name")})
+            own_name = child.data.get("name")  # may be anything, e.g. a list: compare, never hash
+            known = sorted(name for name in {*self.batch, *registered_names()} if name != own_name)
             raise SpecError(
                 Problem(
                     f"unknown spec '{reference}'.{did_you_mean(reference, known)} "
@@ -264,7 +266,7 @@ def _spec_model(document: LocatedDocument) -> type[PartSpec]:
 def _validate(document: LocatedDocument) -> LoadedSpec:
     data = {k: v for k, v in document.data.items() if k != "__dir__"}
     kind = data.get("kind", "robot")
-    if kind not in SPEC_KINDS:
+    if not isinstance(kind, str) or kind not in SPEC_KINDS:  # a list or a mapping is no kind
         raise SpecError(
             Problem(
                 f"unknown spec kind '{kind}'; use one of {', '.join(SPEC_KINDS)}",
@@ -323,6 +325,8 @@ def load_paths(paths: Iterable[str | Path], lookup: ParentLookup = _no_parent) -
             continue
         for file in files:
             try:
+                if file is not path:  # found in a folder: a link must not lead out of it
+                    confine(file, [path], "spec file ")
                 documents.append(_read_document(file))
             except AssemblerError as error:
                 problems.extend(error.problems)

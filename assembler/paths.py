@@ -3,16 +3,29 @@
 The shipped ``specs/`` and ``assets/`` folders sit at the top of a source checkout; a wheel
 carries them inside the package as ``assembler/_shipped/``. Specs may also point into an
 installed Python package with ``package://<package>/<path>`` (e.g. robosuite's own MJCF).
+
+Specs may come from strangers, so the files they name are confined: after ``..`` and symbolic
+links are resolved, a path must lie under the spec's own folder, the shipped folders, the
+package a ``package://`` reference names, or a folder the user allowed (``--allow-path DIR``,
+:func:`allow_paths`, or the ``ASSEMBLER_ALLOW_PATHS`` variable). Anything else is refused.
 """
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
+import os
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
-from assembler.errors import MissingPackageError, MjcfError
+from assembler.errors import AssemblerError, MissingPackageError, MjcfError, SpecError
 
 PACKAGE_SCHEME = "package://"
+
+ALLOW_VARIABLE = "ASSEMBLER_ALLOW_PATHS"
+"""Folders (separated by ``os.pathsep``) whose files any spec may read, besides its own folder."""
+
+ALLOW_HINT = f"pass --allow-path DIR (or set {ALLOW_VARIABLE}) to allow it"
 
 _PACKAGE_DIR = Path(__file__).resolve().parent
 
@@ -55,24 +68,108 @@ def package_root(package: str) -> Path | None:
     return Path(next(iter(found.submodule_search_locations)))
 
 
+def allowed_folders() -> list[Path]:
+    """The folders the user allowed beyond the defaults (from ``ASSEMBLER_ALLOW_PATHS``)."""
+    value = os.environ.get(ALLOW_VARIABLE, "")
+    return [Path(folder).expanduser().resolve() for folder in value.split(os.pathsep) if folder]
+
+
+def allow_paths(*folders: str | Path) -> None:
+    """Let specs read files below ``folders`` too, in this process and the processes it starts.
+
+    The CLI's ``--allow-path DIR`` calls this. It extends ``ASSEMBLER_ALLOW_PATHS`` (so worker
+    processes, e.g. of ``assembler variants``, inherit it); delete that variable to undo it.
+    """
+    current = [folder for folder in os.environ.get(ALLOW_VARIABLE, "").split(os.pathsep) if folder]
+    added = [str(Path(folder).expanduser().resolve()) for folder in folders]
+    os.environ[ALLOW_VARIABLE] = os.pathsep.join(dict.fromkeys([*current, *added]))
+
+
+@contextlib.contextmanager
+def allowing(folders: Iterable[str | Path]) -> Iterator[None]:
+    """:func:`allow_paths` for the duration of a block (one CLI run), then as before."""
+    before = os.environ.get(ALLOW_VARIABLE)
+    allow_paths(*folders)
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(ALLOW_VARIABLE, None)
+        else:
+            os.environ[ALLOW_VARIABLE] = before
+
+
+def trusted_folders() -> list[Path]:
+    """Folders every spec may read: the shipped specs and assets and the user's allowed folders."""
+    return [shipped_specs_dir().resolve(), shipped_assets_dir().resolve(), *allowed_folders()]
+
+
+_homes: dict[Path, set[Path]] = {}
+"""For each file a spec named, the folders that admitted it (the spec's folder, a package's
+root): the MJCF's meshes and textures may lie anywhere below them too."""
+
+
+def homes_of(path: Path) -> set[Path]:
+    """The folders that admitted ``path`` (resolved) when a spec named it."""
+    return set(_homes.get(path, ()))
+
+
+def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerError] = SpecError) -> Path:
+    """``path`` resolved (``..`` and links followed), if it lies under ``homes`` or a trusted folder.
+
+    Otherwise raises ``error`` with one line naming the path and how to allow it.
+    """
+    try:
+        resolved = path.resolve()
+        roots = [*(home.resolve() for home in homes), *trusted_folders()]
+    except (OSError, ValueError, RuntimeError) as problem:  # a loop of links, a NUL byte
+        raise error(f"{what}{path}: cannot resolve this path ({problem})") from None
+    if any(resolved.is_relative_to(root) for root in roots):
+        _homes.setdefault(resolved, set()).update(home.resolve() for home in homes)
+        return resolved
+    written = Path(os.path.normpath(os.path.abspath(path)))
+    link = f" (a link to {display_path(resolved)})" if resolved != written else ""
+    raise error(
+        f"{what}{display_path(written)}{link} is outside the folders a spec may read (its own "
+        f"folder, the shipped specs and assets, installed packages); {ALLOW_HINT}"
+    )
+
+
 def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     """Turn a spec's file reference into an absolute path or keep a ``package://`` reference.
 
     Relative paths are taken relative to the spec's own folder (or the working directory for
-    a spec given as a string), so a spec and its MJCF can move together.
+    a spec given as a string), so a spec and its MJCF can move together. An existing path must
+    stay below that folder or a trusted one (:func:`confine`); :class:`SpecError` otherwise. A
+    path that does not exist yet is checked when it is read (:func:`locate_model_file`).
     """
     if reference.startswith(PACKAGE_SCHEME):
         return reference
+    home = spec_dir or Path.cwd()
     path = Path(reference).expanduser()
     if not path.is_absolute():
-        path = (spec_dir or Path.cwd()) / path
-    return str(path.resolve())
+        path = home / path
+    if not os.path.lexists(path):  # nothing to read yet: "not found" is the error, when it is read
+        return str(path.resolve())
+    return str(confine(path, [home], ""))
+
+
+def _is_file(path: Path) -> bool:
+    try:
+        return path.is_file()
+    except (OSError, ValueError):  # a name too long for the file system, a NUL byte
+        return False
 
 
 def locate_model_file(reference: str) -> Path:
-    """The file behind a resolved reference; raises :class:`MjcfError` saying what to do if absent."""
+    """The file behind a resolved reference; raises :class:`MjcfError` saying what to do if absent.
+
+    A ``package://`` path must stay inside its package's folder.
+    """
     if reference.startswith(PACKAGE_SCHEME):
         package, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
+        if not package.isidentifier():  # find_spec("a.b") would import package a
+            raise MjcfError(f"{reference}: expected package://<top-level package>/<path in it>")
         root = package_root(package)
         if root is None:
             extra = ' (pip install "robot-assembler[robosuite]")' if package == "robosuite" else ""
@@ -80,8 +177,12 @@ def locate_model_file(reference: str) -> Path:
                 f"{reference}: Python package '{package}' is not installed; install it{extra}"
             )
         path = root / inner
+        if _is_file(path):
+            path = confine(path, [root], f"{reference}: ", MjcfError)
     else:
         path = Path(reference)
-    if not path.is_file():
+        if _is_file(path):  # admitted when its spec was loaded, unless it appeared only since
+            path = confine(path, homes_of(path.resolve()), "", MjcfError)
+    if not _is_file(path):
         raise MjcfError(f"MJCF file not found: {display_path(path)}")
     return path

@@ -4,16 +4,21 @@ PyYAML's safe loader silently keeps the last of two equal keys and forgets where
 from. Specs are reviewed by people, so we compose the node graph ourselves: duplicate keys are
 errors, keys must be strings, and every mapping key and value remembers its position so that a
 schema error can point at the line a reviewer must change.
+
+Specs may also come from strangers, so reading is bounded (:mod:`assembler.limits`): file size,
+nesting depth, items per list, and the number of values aliases may expand to.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import yaml
 
 from assembler.errors import Location, Problem, SpecError
+from assembler.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
 
 PLAIN_DATA_TAGS = frozenset(
     f"tag:yaml.org,2002:{name}" for name in ("map", "seq", "str", "int", "float", "bool", "null")
@@ -53,25 +58,83 @@ def _location(file: str, node: yaml.Node) -> Location:
     return Location(file, node.start_mark.line + 1, node.start_mark.column + 1)
 
 
+class _DepthLimitedLoader(yaml.SafeLoader):  # type: ignore[misc]  # PyYAML has no type stubs here
+    """PyYAML's safe composer with a bound on nesting (it recurses once per level)."""
+
+    def __init__(self, text: str, file: str) -> None:
+        super().__init__(text)
+        self.file = file
+        self.depth = 0
+
+    def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node | None:
+        self.depth += 1
+        try:
+            if self.depth > MAX_YAML_DEPTH:
+                mark = self.peek_event().start_mark
+                raise SpecError(
+                    Problem(
+                        f"nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels; "
+                        "a spec nests a few levels deep",
+                        Location(self.file, mark.line + 1, mark.column + 1),
+                    )
+                )
+            return super().compose_node(parent, index)
+        finally:
+            self.depth -= 1
+
+
 class _Builder:
-    """Turns composed YAML nodes into Python data, collecting marks and problems."""
+    """Turns composed YAML nodes into Python data, collecting marks and problems.
+
+    Aliases are expanded here (a node may be reached many times), so the values built are
+    counted and building stops at :data:`MAX_YAML_VALUES`.
+    """
 
     def __init__(self, file: str) -> None:
         self.file = file
         self.marks: dict[DataPath, Location] = {}
         self.problems: list[Problem] = []
+        self.values = 0
         self._constructor = yaml.constructor.SafeConstructor()
 
     def build(self, node: yaml.Node, path: DataPath) -> Any:
+        self.values += 1
+        if self.values > MAX_YAML_VALUES:
+            raise SpecError(
+                Problem(
+                    f"the values in the document, aliases expanded, exceed the limit of {MAX_YAML_VALUES}; "
+                    "each alias (*name) repeats all its anchor names: write the values out instead",
+                    _location(self.file, node),
+                    dotted(path) or None,
+                )
+            )
         self.marks.setdefault(path, _location(self.file, node))
         if node.tag not in PLAIN_DATA_TAGS:
             self._problem(node, path, f"YAML tag '{node.tag}' is not allowed; specs are plain data")
             return None
+        if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)) and len(node.value) > MAX_YAML_ITEMS:
+            kind = "mapping" if isinstance(node, yaml.MappingNode) else "list"
+            raise SpecError(
+                Problem(
+                    f"a {kind} of {len(node.value)} items exceeds the limit of {MAX_YAML_ITEMS} items",
+                    _location(self.file, node),
+                    dotted(path) or None,
+                )
+            )
         if isinstance(node, yaml.MappingNode):
             return self._mapping(node, path)
         if isinstance(node, yaml.SequenceNode):
             return [self.build(item, (*path, index)) for index, item in enumerate(node.value)]
-        return self._constructor.construct_object(node, deep=True)
+        return self._scalar(node, path)
+
+    def _scalar(self, node: yaml.Node, path: DataPath) -> Any:
+        try:
+            return self._constructor.construct_object(node, deep=True)
+        except (ValueError, KeyError, TypeError, OverflowError):
+            # e.g. "!!float abc", "!!bool maybe", or an integer of 5000 digits
+            kind = node.tag.rsplit(":", 1)[-1]
+            self._problem(node, path, f"YAML: cannot read {_short(node.value)!r} as {kind}")
+            return None
 
     def _mapping(self, node: yaml.MappingNode, path: DataPath) -> dict[str, Any]:
         result: dict[str, Any] = {}
@@ -106,17 +169,76 @@ class _Builder:
         self.problems.append(Problem(message, _location(self.file, node), dotted(path) or None))
 
 
-def parse_yaml(text: str, file: str) -> LocatedDocument:
-    """Parse one YAML document that must be a mapping; raise :class:`SpecError` with positions."""
+def _short(text: object, limit: int = 40) -> str:
+    """A value as it may be quoted in a message: one line, cut to ``limit`` characters."""
+    shown = " ".join(str(text).split())
+    return shown if len(shown) <= limit else shown[: limit - 3] + "..."
+
+
+def read_yaml_text(path: Path, shown: str) -> str:
+    """A YAML file's text: at most :data:`MAX_SPEC_BYTES` read, UTF-8 with or without a BOM."""
     try:
-        node = yaml.compose(text, Loader=yaml.SafeLoader)
+        with path.open("rb") as stream:
+            raw = stream.read(MAX_SPEC_BYTES + 1)
+    except OSError as error:
+        raise SpecError(Problem(f"cannot read the file: {error.strerror}", Location(shown))) from None
+    if len(raw) > MAX_SPEC_BYTES:
+        raise SpecError(
+            Problem(
+                f"the file's size exceeds the limit of {MAX_SPEC_BYTES} bytes for a spec file",
+                Location(shown),
+            )
+        )
+    try:
+        return raw.decode("utf-8-sig")  # a byte-order mark is harmless; strip it
+    except UnicodeDecodeError as error:
+        raise SpecError(
+            Problem(f"the file is not UTF-8 text (byte {error.start}); save it as UTF-8", Location(shown))
+        ) from None
+
+
+def _compose(text: str, file: str) -> yaml.Node | None:
+    """The document's node graph (aliases not yet expanded), or a positioned :class:`SpecError`."""
+    loader: _DepthLimitedLoader | None = None
+    try:
+        loader = _DepthLimitedLoader(text, file)  # its reader checks the characters at once
+        return loader.get_single_node()
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         where = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
         reason = error.problem or error.context or "invalid YAML"
+        if reason.startswith("but ") and error.context:  # "expected a single document ... but found"
+            reason = f"{error.context} {reason}"
+        reason = _short(reason, 200)
         raise SpecError(Problem(f"YAML syntax error: {reason}", where)) from None
+    except yaml.reader.ReaderError as error:
+        # a control character: name it and its position, not PyYAML's multi-line text
+        line = text.count("\n", 0, error.position) + 1
+        column = error.position - (text.rfind("\n", 0, error.position) + 1) + 1
+        character = error.character if isinstance(error.character, str) else chr(error.character)
+        raise SpecError(
+            Problem(
+                f"YAML: character #x{ord(character):04x} is not allowed in YAML text",
+                Location(file, line, column),
+            )
+        ) from None
     except yaml.YAMLError as error:
-        raise SpecError(Problem(f"YAML error: {error}", Location(file))) from None
+        raise SpecError(Problem(f"YAML error: {_short(error, 200)}", Location(file))) from None
+    finally:
+        if loader is not None:
+            loader.dispose()
+
+
+def parse_yaml(text: str, file: str) -> LocatedDocument:
+    """Parse one YAML document that must be a mapping; raise :class:`SpecError` with positions."""
+    if len(text) > MAX_SPEC_BYTES:
+        raise SpecError(
+            Problem(
+                f"the text's length exceeds the limit of {MAX_SPEC_BYTES} characters for a spec",
+                Location(file),
+            )
+        )
+    node = _compose(text, file)
     if node is None:
         raise SpecError(Problem("the file is empty; a spec is a YAML mapping", Location(file, 1, 1)))
     if not isinstance(node, yaml.MappingNode):
@@ -127,7 +249,7 @@ def parse_yaml(text: str, file: str) -> LocatedDocument:
     except yaml.constructor.ConstructorError as error:
         mark = error.problem_mark
         where = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
-        raise SpecError(Problem(f"YAML: {error.problem}", where)) from None
+        raise SpecError(Problem(f"YAML: {_short(error.problem, 200)}", where)) from None
     if builder.problems:
         raise SpecError(builder.problems)
     return LocatedDocument(data=data, file=file, marks=builder.marks)

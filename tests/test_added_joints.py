@@ -67,5 +67,8 @@ def test_added_joints_show_their_source_in_inspect(write: Callable[[str, str], P
 
 
 def test_an_added_joint_on_a_missing_body_names_the_bodies(write: Callable[[str, str], Path]) -> None:
-    with pytest.raises(MjcfError, match=r"hull.yaml:7:3: added_joints: added joint 'forward': no body 'chassis'. Bodies: hull, support"):
+    with pytest.raises(
+        MjcfError,
+        match=r"hull.yaml:7:3: added_joints: added joint 'forward': no body 'chassis'. Bodies: hull, support",
+    ):
         _base(write, body="chassis")

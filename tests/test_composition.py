@@ -102,7 +102,8 @@ def test_a_second_base_is_an_error(parts: Path) -> None:
         robot.add_base(assembler.create_base("TestNull"))
 
 
-def test_missing_support_body_is_named(parts: Path, write) -> None:  # type: ignore[no-untyped-def]
+def test_missing_support_body_is_named(parts: Path, write, monkeypatch: pytest.MonkeyPatch) -> None:  # type: ignore[no-untyped-def]
+    monkeypatch.setenv("ASSEMBLER_ALLOW_PATHS", str(parts.parent))  # the MJCF sits in a sibling folder
     write("parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n")
     assembler.register_specs(
         write(

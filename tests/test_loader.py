@@ -119,7 +119,10 @@ def test_non_utf8_text_is_refused_with_its_position(write: Write) -> None:
         load_paths([path])
 
 
-def test_extends_a_file_inherits_and_overrides_fields(write: Write) -> None:
+def test_extends_a_file_inherits_and_overrides_fields(
+    write: Write, monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_ALLOW_PATHS", str(tmp_path))  # the parent sits in a sibling folder
     write(
         "specs/parent.yaml",
         "name: Parent\nmjcf: models/p.xml\ninit_qpos: [1, 2]\njoint_defaults:\n  damping: 0.3\n",

@@ -57,7 +57,10 @@ def test_register_robot_is_a_decorator(two_link: Path) -> None:
     assert REGISTERED_ROBOTS["Plain"] is created
 
 
-def test_duplicate_name_names_both_sources(two_link: Path, write) -> None:  # type: ignore[no-untyped-def]
+def test_duplicate_name_names_both_sources(two_link: Path, write, monkeypatch: pytest.MonkeyPatch) -> None:  # type: ignore[no-untyped-def]
+    monkeypatch.setenv(
+        "ASSEMBLER_ALLOW_PATHS", str(two_link.parent.parent)
+    )  # the MJCF sits in a sibling folder
     assembler.register_specs(two_link)
     other = write("elsewhere/twolink.yaml", "name: TwoLink\nmjcf: ../robots/twolink.xml\n")
     with pytest.raises(RegistryError) as caught:

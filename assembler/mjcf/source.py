@@ -3,7 +3,8 @@
 Each robot instance gets a cheap copy of the pristine spec. Asset paths are made absolute (and
 ``meshdir``/``texturedir`` cleared) before anything is attached, because ``MjSpec.to_xml`` keeps only
 the outermost model's directories: without this the emitted XML would not load from another
-working directory.
+working directory. Every asset path must stay in the allowed folders (:func:`assembler.paths.confine`),
+and the file passes :mod:`assembler.mjcf.xml_guard` before any parser reads it.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import functools
 import os
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,7 +22,8 @@ from pydantic import TypeAdapter
 from assembler.errors import MjcfError, Problem
 from assembler.mjcf.authored import authored_attributes
 from assembler.mjcf.fixes import apply_fixes
-from assembler.paths import display_path, locate_model_file
+from assembler.mjcf.xml_guard import check_mjcf
+from assembler.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.schema.fixes import MjcfFix
 
 GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "statistic")
@@ -51,25 +53,27 @@ class MjcfSource:
         return [j.name for j in self.pristine.joints if j.type != mujoco.mjtJoint.mjJNT_FREE]
 
 
-def _asset_file(directory: str, base: Path, file: str) -> str:
-    if not file or os.path.isabs(file):
+def _asset_file(directory: str, base: Path, file: str, homes: Collection[Path]) -> str:
+    """The asset's absolute path; it must stay in the allowed folders (MuJoCo reads it at compile)."""
+    if not file:
         return file
-    return str((base / directory / file).resolve())
+    path = Path(file) if os.path.isabs(file) else base / directory / file
+    return str(confine(path, homes, f"{display_path(base)}: asset file ", MjcfError))
 
 
-def _absolutize_assets(spec: mujoco.MjSpec, base: Path) -> list[str]:
+def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path]) -> list[str]:
     """Rewrite every asset file path to an absolute one; return those that do not exist."""
     missing = []
     mesh_dir, texture_dir = spec.meshdir or "", spec.texturedir or ""
     groups = [(spec.meshes, mesh_dir), (spec.hfields, mesh_dir), (spec.skins, mesh_dir)]
     for elements, directory in groups:
         for element in elements:
-            element.file = _asset_file(directory, base, element.file)
+            element.file = _asset_file(directory, base, element.file, homes)
             if element.file and not os.path.isfile(element.file):
                 missing.append(element.file)
     for texture in spec.textures:
-        texture.file = _asset_file(texture_dir, base, texture.file)
-        texture.cubefiles = [_asset_file(texture_dir, base, f) for f in texture.cubefiles]
+        texture.file = _asset_file(texture_dir, base, texture.file, homes)
+        texture.cubefiles = [_asset_file(texture_dir, base, f, homes) for f in texture.cubefiles]
         for file in [texture.file, *texture.cubefiles]:
             if file and not os.path.isfile(file):
                 missing.append(file)
@@ -119,13 +123,14 @@ def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjS
 
 
 @functools.lru_cache(maxsize=64)
-def _load(path: Path, mtime_ns: int, size: int, fixes_json: str) -> MjcfSource:
+def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozenset[Path]) -> MjcfSource:
     shown = display_path(path)
+    check_mjcf(path, homes)  # size, no DTD, includes confined: before any parser expands anything
     root, spec = _parse(path, _FIXES.validate_json(fixes_json))
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
-    missing = _absolutize_assets(spec, path.parent)
+    missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
     return MjcfSource(
@@ -141,4 +146,6 @@ def load_mjcf(reference: str, fixes: Sequence[MjcfFix] = ()) -> MjcfSource:
     only when the file or the repairs change."""
     path = locate_model_file(reference).resolve()
     stat = path.stat()
-    return _load(path, stat.st_mtime_ns, stat.st_size, _FIXES.dump_json(list(fixes)).decode())
+    # Its assets may lie below the folders that admitted it (a spec's folder, a package) or its own.
+    homes = frozenset({path.parent, *homes_of(path), *allowed_folders()})
+    return _load(path, stat.st_mtime_ns, stat.st_size, _FIXES.dump_json(list(fixes)).decode(), homes)

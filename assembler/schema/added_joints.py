@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from assembler.schema.common import NonNegativeFloat, StrictModel, Vec3
+from assembler.schema.common import NonNegativeFloat, Range, StrictModel, Vec3
 from assembler.schema.parts import Name
 
 
@@ -18,10 +18,10 @@ class VelocityActuator(StrictModel):
     kv: NonNegativeFloat
     """Velocity gain."""
 
-    ctrlrange: tuple[float, float]
+    ctrlrange: Range
     """Range of the commanded velocity (m/s or rad/s)."""
 
-    forcerange: tuple[float, float] | None = None
+    forcerange: Range | None = None
     """Range of the actuator force; null leaves it unlimited."""
 
 
@@ -52,7 +52,7 @@ class AddedJoint(StrictModel):
     frictionloss: NonNegativeFloat = 0.0
     """Dry friction of the joint."""
 
-    range: tuple[float, float] | None = None
+    range: Range | None = None
     """Joint limits; null leaves the joint unlimited."""
 
     actuator: VelocityActuator | None = None

@@ -4,13 +4,27 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+from pydantic_core import PydanticCustomError
 
 FiniteFloat = Annotated[float, Field(allow_inf_nan=False)]
 """A real number; NaN and infinities are refused at validation."""
 
 NonNegativeFloat = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
 """A finite number that is zero or larger."""
+
+
+def _ordered(value: tuple[float, float]) -> tuple[float, float]:
+    low, high = value
+    if not low < high:  # MuJoCo refuses such a range only at compile time, far from the spec line
+        raise PydanticCustomError(
+            "range_order", "expected min < max, got [{low}, {high}]", {"low": low, "high": high}
+        )
+    return value
+
+
+Range = Annotated[tuple[FiniteFloat, FiniteFloat], AfterValidator(_ordered)]
+"""A (min, max) interval of finite numbers with min < max, e.g. a joint range or a ctrlrange."""
 
 Vec3 = tuple[FiniteFloat, FiniteFloat, FiniteFloat]
 """Three finite numbers, e.g. a position (x, y, z) in metres."""

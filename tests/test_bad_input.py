@@ -1,0 +1,128 @@
+"""Bad input, through the command line: every row gets its exact message, exit code 1, no file.
+
+Each row is a spec's bytes and the lines ``assembler build`` prints (``{spec}`` is the spec's
+path). Bad numbers, wrong shapes, bad encodings and resource bombs all end here as one readable
+line, never a traceback and never a crash later inside MuJoCo.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mujoco
+import pytest
+
+from assembler.cli import main
+from assembler.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
+from tests.conftest import MOBILE_MJCF, TWO_LINK_MJCF
+
+ARM = b"name: Arm\nmjcf: twolink.xml\n"
+BASE = b"kind: base\nname: Cart\ntype: mobile\nmjcf: mobile.xml\n"
+ONE_PER_JOINT = "expected a non-negative number, a list of them (one per joint), a mapping 'inverse_index: <scale>' or null"
+
+LAUGHS = b"".join(
+    [ARM, b"a: &a [x, x, x, x, x, x, x, x, x, x]\n"]
+    + [
+        f"{b}: &{b} [{', '.join(['*' + a] * 10)}]\n".encode()
+        for a, b in zip("abcdefg", "bcdefgh", strict=True)
+    ]
+)
+
+# One row per line, so the table reads as a table.
+# fmt: off
+CASES = [
+    # numbers
+    pytest.param(ARM + b"init_qpos: [0, .nan]\n", ["{spec}:3:16: init_qpos[1]: Input should be a finite number"], id="nan"),
+    pytest.param(ARM + b"top_offset: [0, 0, .inf]\n", ["{spec}:3:20: top_offset[2]: Input should be a finite number"], id="infinity"),
+    pytest.param(ARM + b"horizontal_radius: 1.0e+999\n", ["{spec}:3:20: horizontal_radius: Input should be a finite number"], id="overflow-to-infinity"),
+    pytest.param(ARM + b"joint_defaults: {damping: -.inf}\n", [f"{{spec}}:3:27: joint_defaults.damping: {ONE_PER_JOINT}, got -inf"], id="negative-infinity-rule"),
+    pytest.param(ARM + b"joints:\n  - {match: shoulder, damping: -1}\n", ["{spec}:4:32: joints[0].damping: Input should be greater than or equal to 0"], id="negative-damping"),
+    pytest.param(ARM + b"horizontal_radius: -0.5\n", ["{spec}:3:20: horizontal_radius: Input should be greater than or equal to 0"], id="negative-radius"),
+    pytest.param(ARM + b"horizontal_radius: " + b"1" * 5000 + b"\n", ["{spec}:3:20: horizontal_radius: YAML: cannot read '1111111111111111111111111111111111111...' as int"], id="integer-of-5000-digits"),
+    pytest.param(ARM + b"horizontal_radius: !!float abc\n", ["{spec}:3:20: horizontal_radius: YAML: cannot read 'abc' as float"], id="explicit-float-tag-on-text"),
+    pytest.param(ARM + b"remove_free_joint: !!bool maybe\n", ["{spec}:3:20: remove_free_joint: YAML: cannot read 'maybe' as bool"], id="explicit-bool-tag-on-text"),
+    # ranges
+    pytest.param(BASE + b"added_joints:\n  - {name: x, type: slide, axis: [1, 0, 0], range: [1, -1]}\n", ["{spec}:6:52: added_joints[0].range: expected min < max, got [1.0, -1.0]"], id="range-min-above-max"),
+    pytest.param(BASE + b"added_joints:\n  - name: x\n    type: slide\n    axis: [1, 0, 0]\n    actuator: {name: ax, kv: 10, ctrlrange: [0.5, 0.5]}\n", ["{spec}:9:45: added_joints[0].actuator.ctrlrange: expected min < max, got [0.5, 0.5]"], id="empty-ctrlrange"),
+    pytest.param(BASE + b"added_joints:\n  - name: x\n    type: slide\n    axis: [1, 0, 0]\n    actuator: {name: ax, kv: 10, ctrlrange: [-1, 1], forcerange: [0, .nan]}\n", ["{spec}:9:70: added_joints[0].actuator.forcerange[1]: Input should be a finite number"], id="nan-in-forcerange"),
+    # vector sizes
+    pytest.param(ARM + b"top_offset: [0, 0]\n", ["{spec}:3:13: top_offset: expected 3 values, got 2"], id="vector-too-short"),
+    pytest.param(ARM + b"top_offset: [0, 0, 0, 0]\n", ["{spec}:3:13: top_offset: Tuple should have at most 3 items after validation, not 4"], id="vector-too-long"),
+    pytest.param(ARM + b"init_qpos: [0, 0, 0]\n", ["{spec}:3:12: init_qpos: expected 2 values (one per joint: shoulder, elbow), got 3"], id="one-value-per-joint"),
+    pytest.param(ARM + b"top_offset: 1.0\n", ["{spec}:3:13: top_offset: Input should be a valid tuple"], id="number-for-vector"),
+    # document shape
+    pytest.param(b"", ["{spec}:1:1: the file is empty; a spec is a YAML mapping"], id="empty-file"),
+    pytest.param(b"# only a comment\n\n", ["{spec}:1:1: the file is empty; a spec is a YAML mapping"], id="comments-only"),
+    pytest.param(b"- name: Arm\n- mjcf: twolink.xml\n", ["{spec}:1:1: a spec must be a YAML mapping (key: value lines)"], id="list-document"),
+    pytest.param(b"just some text\n", ["{spec}:1:1: a spec must be a YAML mapping (key: value lines)"], id="text-document"),
+    pytest.param(ARM + b"---\nname: B\n", ["{spec}:3:1: YAML syntax error: expected a single document in the stream but found another document"], id="two-documents"),
+    pytest.param(ARM + b"1: x\n", ["{spec}:3:1: keys must be text, got int"], id="number-key"),
+    pytest.param(ARM + b"description: 2024-01-01\n", ["{spec}:3:14: description: YAML tag 'tag:yaml.org,2002:timestamp' is not allowed; specs are plain data"], id="date"),
+    pytest.param(b"name: !!python/object/apply:os.system [touch pwned]\nmjcf: twolink.xml\n", ["{spec}:1:7: name: YAML tag 'tag:yaml.org,2002:python/object/apply:os.system' is not allowed; specs are plain data"], id="python-tag"),
+    pytest.param(b"d: &d {damping: 0.1}\n" + ARM + b"joint_defaults:\n  <<: *d\n", ["{spec}:5:3: joint_defaults: YAML merge keys ('<<') are not supported; write the keys out"], id="merge-key"),
+    # encodings
+    pytest.param(ARM + b"description: caf\xe9\n", ["{spec}: the file is not UTF-8 text (byte 44); save it as UTF-8"], id="latin-1"),
+    pytest.param(ARM.decode().encode("utf-16"), ["{spec}: the file is not UTF-8 text (byte 0); save it as UTF-8"], id="utf-16"),
+    pytest.param(ARM + b"description: a\x00b\n", ["{spec}:3:15: YAML: character #x0000 is not allowed in YAML text"], id="nul-byte"),
+    pytest.param(b"name: Arm\r\nmjcf: twolink.xml\r\ninit_qpos: [0.1, x]\r\n", ["{spec}:3:18: init_qpos[1]: Input should be a valid number, unable to parse string as a number"], id="crlf-positions"),
+    # resource bombs
+    pytest.param(LAUGHS, [f"{{spec}}:3:8: e[7][8][8][8][0]: the values in the document, aliases expanded, exceed the limit of {MAX_YAML_VALUES}; each alias (*name) repeats all its anchor names: write the values out instead"], id="billion-laughs"),
+    pytest.param(ARM + b"init_qpos: " + b"[" * 100 + b"]" * 100 + b"\n", [f"{{spec}}:3:{12 + MAX_YAML_DEPTH - 1}: nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels; a spec nests a few levels deep"], id="deep-lists"),
+    pytest.param(ARM + b"joint_defaults: " + b"{a: " * 100 + b"1" + b"}" * 100 + b"\n", [f"{{spec}}:3:{17 + 4 * (MAX_YAML_DEPTH - 2) + 1}: nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels; a spec nests a few levels deep"], id="deep-mappings"),
+    pytest.param(ARM + b"init_qpos: [" + b"0, " * MAX_YAML_ITEMS + b"0]\n", [f"{{spec}}:3:12: init_qpos: a list of {MAX_YAML_ITEMS + 1} items exceeds the limit of {MAX_YAML_ITEMS} items"], id="huge-list"),
+    pytest.param(ARM + b"description: " + b"x" * MAX_SPEC_BYTES + b"\n", [f"{{spec}}: the file's size exceeds the limit of {MAX_SPEC_BYTES} bytes for a spec file"], id="huge-file"),
+    # what MuJoCo itself refuses is reported, not crashed on
+    pytest.param(b"name: Arm\nmjcf: negative_mass.xml\n", ["{spec}:1:1: robot 'Arm': MuJoCo cannot compile the assembly: mass, inertia or density are negative in geom Element name 'robot0_link2_col', id 3, line 23"], id="negative-mass-in-mjcf"),
+    pytest.param(b"name: Arm\nmjcf: missing.xml\n", ["{spec}:2:7: mjcf: MJCF file not found: {folder}/missing.xml"], id="missing-mjcf"),
+]
+# fmt: on
+
+
+def _folder(tmp_path: Path) -> Path:
+    folder = tmp_path / "specs"
+    folder.mkdir()
+    (folder / "twolink.xml").write_text(TWO_LINK_MJCF)
+    (folder / "mobile.xml").write_text(MOBILE_MJCF)
+    (folder / "negative_mass.xml").write_text(TWO_LINK_MJCF.replace('mass="0.5"', 'mass="-0.5"'))
+    return folder
+
+
+@pytest.mark.parametrize(("content", "expected"), CASES)
+def test_bad_input_gets_its_exact_message_and_writes_nothing(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], content: bytes, expected: list[str]
+) -> None:
+    folder = _folder(tmp_path)
+    spec = folder / "bad.yaml"
+    spec.write_bytes(content)
+    out = tmp_path / "out.xml"
+    code = main(["build", str(spec), "-o", str(out)])
+    captured = capsys.readouterr()
+    assert (code, captured.err.splitlines()) == (
+        1,
+        [line.format(spec=spec, folder=folder) for line in expected],
+    )
+    assert captured.out == ""
+    assert not out.exists()
+
+
+def test_a_byte_order_mark_and_windows_line_endings_just_work(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    spec = _folder(tmp_path) / "arm.yaml"
+    spec.write_bytes(b"\xef\xbb\xbfname: Arm\r\nmjcf: twolink.xml\r\ninit_qpos: [0.1, 0.2]\r\n")
+    out = tmp_path / "arm.xml"
+    assert main(["build", str(spec), "-o", str(out)]) == 0
+    assert capsys.readouterr().err == f"wrote {out}\n"
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert model.key("home").qpos.tolist() == [0.1, 0.2]
+
+
+def test_a_list_as_name_with_an_unknown_parent_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Found by the long fuzz run: the name was hashed while listing the known parents."""
+    spec = _folder(tmp_path) / "bad.yaml"
+    spec.write_text("name: []\nextends: Sparow7\nmjcf: twolink.xml\n")
+    assert main(["build", str(spec)]) == 1
+    (line,) = capsys.readouterr().err.splitlines()
+    assert line.startswith(f"{spec}:2:10: extends: unknown spec 'Sparow7'. Did you mean 'Sparrow7'? Known: ")

@@ -1,0 +1,238 @@
+"""Files a spec names stay where they belong: its own folder, the shipped folders, packages, or
+folders the user allowed; MJCF is refused before parsing when it declares a DTD (entities)."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+import assembler
+from assembler.cli import main
+from assembler.errors import MjcfError, SpecError
+from assembler.paths import ALLOW_VARIABLE, allow_paths
+from tests.conftest import TWO_LINK_MJCF
+
+Write = Callable[[str, str], Path]
+
+OUTSIDE = "is outside the folders a spec may read (its own folder, the shipped specs and assets, installed packages); pass --allow-path DIR (or set ASSEMBLER_ALLOW_PATHS) to allow it"
+
+MESH_MJCF = """\
+<mujoco model="meshy">
+  <compiler meshdir="{meshdir}"/>
+  <asset><mesh name="tetra" file="{file}"/></asset>
+  <worldbody>
+    <body name="base"><joint name="spin" axis="0 0 1"/><geom type="mesh" mesh="tetra"/></body>
+  </worldbody>
+</mujoco>
+"""
+TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+
+
+@pytest.fixture(autouse=True)
+def no_allowed_paths(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv(ALLOW_VARIABLE, raising=False)
+
+
+def _build(argv: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, list[str]]:
+    code = main(argv)
+    return code, capsys.readouterr().err.splitlines()
+
+
+def test_mjcf_path_escaping_with_dotdot_is_refused_and_allow_path_admits_it(
+    write: Write, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write("outside/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
+    code, err = _build(["build", str(spec), "-o", str(tmp_path / "arm.xml")], capsys)
+    assert code == 1
+    assert err == [f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"]
+    assert not (tmp_path / "arm.xml").exists()
+    allowed = ["--allow-path", str(tmp_path / "outside"), "build", str(spec), "-o", str(tmp_path / "arm.xml")]
+    assert _build(allowed, capsys) == (0, [f"wrote {tmp_path}/arm.xml"])
+    assert os.environ.get(ALLOW_VARIABLE) is None  # the flag lasts one run
+
+
+def test_absolute_mjcf_path_outside_is_refused(write: Write) -> None:
+    target = write("outside/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", f"name: Arm\nmjcf: {target}\n")
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(spec)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {target} {OUTSIDE}"
+
+
+def test_a_file_that_appears_outside_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
+    (cls,) = assembler.register_specs(spec)  # nothing there yet: nothing to refuse
+    write("outside/twolink.xml", TWO_LINK_MJCF)
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"
+
+
+def test_a_symbolic_link_leading_out_is_refused_and_named(write: Write, tmp_path: Path) -> None:
+    target = write("outside/twolink.xml", TWO_LINK_MJCF)
+    (tmp_path / "specs").mkdir()
+    (tmp_path / "specs" / "link.xml").symlink_to(target)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: link.xml\n")
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(spec)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/specs/link.xml (a link to {target}) {OUTSIDE}"
+
+
+def test_a_link_inside_the_spec_folder_is_fine(write: Write, tmp_path: Path) -> None:
+    target = write("specs/models/twolink.xml", TWO_LINK_MJCF)
+    (tmp_path / "specs" / "link.xml").symlink_to(target)
+    (cls,) = assembler.register_specs(write("specs/arm.yaml", "name: Arm\nmjcf: link.xml\n"))
+    assert cls(idn=0).get_model().njnt == 2
+
+
+def test_parent_spec_outside_is_refused(write: Write) -> None:
+    write("outside/parent.yaml", "name: Parent\nmjcf: twolink.xml\n")
+    spec = write("specs/child.yaml", "name: Child\nextends: ../outside/parent.yaml\n")
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(spec)
+    assert str(caught.value) == f"{spec}:2:10: extends: {spec.parent.parent}/outside/parent.yaml {OUTSIDE}"
+
+
+@pytest.mark.parametrize(
+    ("meshdir", "file"),
+    [
+        pytest.param("../../outside", "tetra.obj", id="meshdir-escapes"),
+        pytest.param("meshes", "../../../outside/tetra.obj", id="file-escapes"),
+        pytest.param("meshes", "{tmp}/outside/tetra.obj", id="absolute-file"),
+    ],
+)
+def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
+    write: Write, tmp_path: Path, meshdir: str, file: str
+) -> None:
+    write("outside/tetra.obj", TETRA)
+    write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir=meshdir, file=file.format(tmp=tmp_path)))
+    (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0)
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/meshy.yaml:2:7: mjcf: {tmp_path}/specs/robot: asset file "
+        f"{tmp_path}/outside/tetra.obj {OUTSIDE}"
+    )
+
+
+def test_meshes_anywhere_below_the_spec_folder_are_fine(write: Write) -> None:
+    write("specs/meshes/tetra.obj", TETRA)  # beside the MJCF's folder, not below it
+    write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir="../meshes", file="tetra.obj"))
+    (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
+    assert cls(idn=0).get_model().nmesh == 1
+
+
+def test_allow_paths_in_python_admits_a_folder(write: Write, tmp_path: Path) -> None:
+    write("outside/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
+    allow_paths(tmp_path / "outside")
+    (cls,) = assembler.register_specs(spec)
+    assert cls(idn=0).get_model().njnt == 2
+
+
+@pytest.mark.parametrize(
+    ("reference", "message"),
+    [
+        pytest.param(
+            "package://robosuite/../../../../../../etc/hostname",
+            "package://robosuite/../../../../../../etc/hostname: /etc/hostname " + OUTSIDE,
+            id="dotdot-out-of-the-package",
+        ),
+        pytest.param(
+            "package://os.path/x.xml",
+            "package://os.path/x.xml: expected package://<top-level package>/<path in it>",
+            id="dotted-package-name",
+        ),
+    ],
+)
+def test_package_paths_stay_in_their_package(write: Write, reference: str, message: str) -> None:
+    pytest.importorskip("robosuite")
+    spec = write("specs/arm.yaml", f"name: Arm\nmjcf: {reference}\n")
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {message}"
+
+
+def test_a_spec_file_linked_into_a_folder_from_outside_is_refused(write: Write, tmp_path: Path) -> None:
+    secret = write("home/.env", "SECRET_TOKEN: abc123\n")
+    write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n")
+    write("specs/twolink.xml", TWO_LINK_MJCF)
+    (tmp_path / "specs" / "env.yaml").symlink_to(secret)
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(tmp_path / "specs")
+    assert str(caught.value) == f"spec file {tmp_path}/specs/env.yaml (a link to {secret}) {OUTSIDE}"
+
+
+@pytest.mark.parametrize(
+    ("element", "target"),
+    [
+        pytest.param(
+            '<include file="../outside/part.xml"/>', "<include> file {tmp}/outside/part.xml", id="include"
+        ),
+        pytest.param(
+            '<worldbody><flexcomp name="f" type="mesh" dim="2" file="../outside/tetra.obj"/></worldbody>',
+            "<flexcomp> file {tmp}/outside/tetra.obj",
+            id="flexcomp-mesh",
+        ),
+    ],
+)
+def test_files_read_while_parsing_are_confined_too(
+    write: Write, tmp_path: Path, element: str, target: str
+) -> None:
+    write("outside/part.xml", "<mujoco/>")
+    write("outside/tetra.obj", TETRA)
+    write("specs/twolink.xml", TWO_LINK_MJCF.replace("<worldbody>", f"{element}\n  <worldbody>", 1))
+    (cls,) = assembler.register_specs(write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0)
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/arm.yaml:2:7: mjcf: {tmp_path}/specs/twolink.xml: "
+        f"{target.format(tmp=tmp_path)} {OUTSIDE}"
+    )
+
+
+BILLION_LAUGHS = """\
+<?xml version="1.0"?>
+<!DOCTYPE mujoco [
+  <!ENTITY a "aaaaaaaaaa">
+  <!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;">
+  <!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">
+  <!ENTITY d "&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;">
+]>
+<mujoco model="&d;"><worldbody/></mujoco>
+"""
+EXTERNAL_ENTITY = """\
+<?xml version="1.0"?>
+<!DOCTYPE mujoco [<!ENTITY secret SYSTEM "file:///etc/hostname">]>
+<mujoco model="&secret;"><worldbody/></mujoco>
+"""
+
+
+@pytest.mark.parametrize(
+    "text", [BILLION_LAUGHS, EXTERNAL_ENTITY], ids=["entity-expansion", "external-entity"]
+)
+def test_mjcf_with_a_doctype_is_refused_before_parsing(write: Write, tmp_path: Path, text: str) -> None:
+    write("specs/bomb.xml", text)
+    (cls,) = assembler.register_specs(write("specs/bomb.yaml", "name: Bomb\nmjcf: bomb.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0)
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/bomb.yaml:2:7: mjcf: {tmp_path}/specs/bomb.xml: a document type declaration "
+        "(<!DOCTYPE ...>) is not allowed in MJCF: XML entities are declared there and their expansion "
+        "is unbounded; remove it"
+    )
+
+
+def test_shipped_specs_build_from_another_working_directory(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(tmp_path)  # the shipped specs reach ../../assets: the shipped assets folder
+    assert _build(["build", "Sparrow7", "--base", "QuadrupedBase", "-o", "out.xml"], capsys) == (
+        0,
+        ["wrote out.xml"],
+    )
