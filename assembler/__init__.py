@@ -21,6 +21,7 @@ from assembler.errors import (
     RegistryError,
     SpecError,
 )
+from assembler.experiment import Experiment, load_experiment
 from assembler.loader import LoadedSpec, load_paths, load_string
 from assembler.models import (
     GripperModel,
@@ -31,6 +32,7 @@ from assembler.models import (
     RobotBaseModel,
     RobotModel,
 )
+from assembler.overrides import Override, parse_overrides, with_overrides
 from assembler.registry import (
     REGISTERED_BASES,
     REGISTERED_GRIPPERS,
@@ -45,7 +47,8 @@ from assembler.registry import (
     registered_robot_names,
 )
 from assembler.scene import Scene, build_scene, load_scene
-from assembler.schema import BaseSpec, GripperSpec, RobotSpec, SceneSpec
+from assembler.schema import BaseSpec, ExperimentSpec, GripperSpec, RobotSpec, SceneSpec
+from assembler.variants import VariantPlan, write_variants
 
 __version__ = "0.1.0"
 
@@ -67,6 +70,14 @@ __all__ = [
     "create_base",
     "create_gripper",
     "load_scene",
+    "Experiment",
+    "ExperimentSpec",
+    "Override",
+    "VariantPlan",
+    "load_experiment",
+    "parse_overrides",
+    "with_overrides",
+    "write_variants",
     "register_base",
     "register_gripper",
     "AssemblerError",

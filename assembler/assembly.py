@@ -6,6 +6,7 @@ from collections.abc import Mapping
 
 from assembler.errors import AssemblerError
 from assembler.models import ManipulatorModel, RobotModel
+from assembler.overrides import Overrides
 from assembler.registry import create_base, create_gripper, create_robot
 
 DEFAULT = "default"
@@ -17,11 +18,13 @@ def assemble(
     idn: int | str = 0,
     base: str | None = DEFAULT,
     grippers: Mapping[str, str | None] | None = None,
+    overrides: Overrides = None,
 ) -> RobotModel:
     """Create robot ``robot`` with a base (its default unless given; None for none) and a gripper per
     arm (its defaults, replaced per arm by ``grippers``; None for none). Grippers get idn
-    ``"{idn}_{arm}"``, so their prefix is e.g. ``gripper0_right_``, as in robosuite."""
-    model = create_robot(robot, idn=idn)
+    ``"{idn}_{arm}"``, so their prefix is e.g. ``gripper0_right_``, as in robosuite. ``overrides``
+    change the robot's spec fields for this assembly only (see :func:`assembler.create_robot`)."""
+    model = create_robot(robot, idn=idn, overrides=overrides)
     base_name = model.default_base if base == DEFAULT else base
     if base_name is not None:
         model.add_base(create_base(base_name, idn=idn))

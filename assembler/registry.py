@@ -17,6 +17,7 @@ if TYPE_CHECKING:
     from assembler.models.base_model import RobotBaseModel
     from assembler.models.gripper_model import GripperModel
     from assembler.models.robot_model import RobotModel
+    from assembler.overrides import Overrides
 
 REGISTERED_ROBOTS: dict[str, type[RobotModel]] = {}
 """Every registered robot class by name, in registration order."""
@@ -116,9 +117,17 @@ def robot_class(name: str) -> type[RobotModel]:
     return registered_class("robot", name)  # type: ignore[no-any-return]
 
 
-def create_robot(robot_name: str, *args: Any, **kwargs: Any) -> RobotModel:
-    """An instance of the registered robot ``robot_name``, e.g. ``create_robot("Sparrow7", idn=1)``."""
-    return robot_class(robot_name)(*args, **kwargs)
+def create_robot(robot_name: str, *args: Any, overrides: Overrides = None, **kwargs: Any) -> RobotModel:
+    """An instance of the registered robot ``robot_name``, e.g. ``create_robot("Sparrow7", idn=1)``.
+
+    ``overrides`` (``{"joint_defaults.damping": 0.2}`` or ``["init_qpos[3]=-2.0"]``) change spec
+    fields for this instance only; the registered class is left as it is."""
+    cls = robot_class(robot_name)
+    if overrides:
+        from assembler.overrides import with_overrides  # the loader imports this module
+
+        cls = with_overrides(cls, overrides)
+    return cls(*args, **kwargs)
 
 
 def create_base(base_name: str, idn: int | str = 0) -> RobotBaseModel:

@@ -7,6 +7,7 @@ and never collide. Each robot is placed with ``set_base_xpos`` / ``set_base_ori`
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -64,16 +65,18 @@ def load_scene_spec(path: str | Path) -> SceneSpec:
         raise SpecError(problems_from_validation(error, document, SceneSpec)) from None
 
 
-def build_scene(spec: SceneSpec, folder: Path | None = None) -> Scene:
-    """Assemble and place every robot of ``spec`` into one MuJoCo spec."""
-    robots: list[RobotModel] = []
+def robot_reference(reference: str, folder: Path | None = None) -> str:
+    """A registered robot name; a robot spec file (relative to ``folder``) is registered first."""
+    if reference.endswith(SPEC_SUFFIXES):
+        (cls,) = register_specs((folder or Path.cwd()) / reference)
+        return cls.__name__
+    return reference
+
+
+def place_robots(spec: SceneSpec, robots: Sequence[RobotModel]) -> Scene:
+    """Place assembled robots (one per entry of ``spec``, in order) into one MuJoCo spec."""
     assembly: mujoco.MjSpec | None = None
-    for idn, entry in enumerate(spec.robots):
-        name = entry.robot
-        if name.endswith(SPEC_SUFFIXES):
-            (cls,) = register_specs((folder or Path.cwd()) / name)
-            name = cls.__name__
-        robot = assemble(name, idn=idn, base=entry.base, grippers=dict(entry.grippers.items()))
+    for entry, robot in zip(spec.robots, robots, strict=True):
         robot.set_base_xpos(np.array(entry.pos))
         robot.set_base_ori(np.array(entry.ori))
         if assembly is None:
@@ -83,9 +86,17 @@ def build_scene(spec: SceneSpec, folder: Path | None = None) -> Scene:
                 floor = mujoco.MjSpec.from_string(FLOOR_XML)
                 compose.attach(assembly, floor, assembly.worldbody.add_frame(), "scene_")
         robot.build_into(assembly)
-        robots.append(robot)
     assert assembly is not None  # the schema requires at least one robot
-    return Scene(spec=spec, robots=robots, mjspec=assembly)
+    return Scene(spec=spec, robots=list(robots), mjspec=assembly)
+
+
+def build_scene(spec: SceneSpec, folder: Path | None = None) -> Scene:
+    """Assemble and place every robot of ``spec`` into one MuJoCo spec."""
+    robots = [
+        assemble(robot_reference(e.robot, folder), idn=idn, base=e.base, grippers=dict(e.grippers.items()))
+        for idn, e in enumerate(spec.robots)
+    ]
+    return place_robots(spec, robots)
 
 
 def load_scene(path: str | Path) -> Scene:

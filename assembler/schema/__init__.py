@@ -2,6 +2,7 @@
 
 from assembler.schema.base_spec import BaseSpec, BaseType
 from assembler.schema.common import FiniteFloat, StrictModel, Vec3, Vec4
+from assembler.schema.experiment import ExperimentRobot, ExperimentSpec
 from assembler.schema.gripper import GripperSpec
 from assembler.schema.joints import (
     JOINT_RULE_ATTRIBUTES,
@@ -26,6 +27,8 @@ __all__ = [
     "Arm",
     "BaseSpec",
     "BaseType",
+    "ExperimentRobot",
+    "ExperimentSpec",
     "FiniteFloat",
     "GripperMount",
     "GripperSpec",
