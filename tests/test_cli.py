@@ -125,9 +125,11 @@ def test_schema_is_json_schema_with_every_field_documented(capsys: pytest.Captur
         "#/$defs/BaseSpec",
         "#/$defs/GripperSpec",
         "#/$defs/SceneSpec",
+        "#/$defs/ExperimentSpec",
     ]
     robot = schema["$defs"]["RobotSpec"]
-    assert robot["additionalProperties"] is False and robot["required"] == ["name", "mjcf"]
+    assert robot["additionalProperties"] is False and robot["else"]["required"] == ["name", "mjcf"]
+    assert robot["if"] == {"required": ["extends"]} and robot["then"]["required"] == ["name"]  # inherits mjcf
     undocumented = [
         f"{name}.{field}"
         for name, definition in schema["$defs"].items()

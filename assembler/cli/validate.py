@@ -7,6 +7,7 @@ import sys
 
 from assembler.assembly import assemble
 from assembler.catalog import register_specs
+from assembler.cli.report import add_format_argument, print_problems
 from assembler.errors import AssemblerError, MissingPackageError, Problem
 from assembler.models import RobotModel
 
@@ -15,10 +16,19 @@ def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
     parser = commands.add_parser("validate", help="check spec files and folders")
     parser.add_argument("paths", nargs="+", help="spec files or folders")
     parser.add_argument("--compile", action="store_true", help="also compile each robot with MuJoCo")
+    add_format_argument(parser, ("text", "github"))
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    try:
+        return _validate(args)
+    except AssemblerError as error:  # printed in the chosen format (GitHub annotations in CI)
+        print_problems(error.problems, args.format)
+        return 1
+
+
+def _validate(args: argparse.Namespace) -> int:
     classes = register_specs(*args.paths)
     problems: list[Problem] = []
     unchecked: list[str] = []

@@ -1,0 +1,116 @@
+"""``assembler lint``: problems MuJoCo accepts silently, each with a code, severity, subject, why and fix.
+
+Takes robots (with the usual assembly flags), spec files and spec folders; bases and grippers are
+linted on their own. Exit code 1 when any finding is an error or a spec does not load.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from collections import Counter
+from collections.abc import Sequence
+from pathlib import Path
+
+from assembler.catalog import register_specs
+from assembler.cli.common import add_assembly_arguments, assembled
+from assembler.cli.report import add_format_argument, github_annotation, location_fields, print_problems
+from assembler.errors import AssemblerError, Problem
+from assembler.lint import SEVERITIES, Finding, LintTarget, lint, part_target, robot_target
+from assembler.loader import SPEC_SUFFIXES
+from assembler.models import PartModel
+from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS, robot_class
+
+
+def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = commands.add_parser("lint", help="report problems MuJoCo accepts silently (codes RA101...)")
+    add_assembly_arguments(parser)
+    parser.add_argument(
+        "more",
+        nargs="*",
+        metavar="ROBOT",
+        help="more robots, spec files or spec folders (bases and grippers alone)",
+    )
+    add_format_argument(parser)
+    parser.set_defaults(run=run)
+
+
+def _classes(references: Sequence[str]) -> list[type[PartModel]]:
+    """The parts to lint: spec files and folders registered together (so they may extend each other)."""
+    paths = [r for r in references if r.endswith(SPEC_SUFFIXES) or Path(r).exists()]
+    classes = list(register_specs(*paths)) if paths else []
+    for name in (r for r in references if r not in paths):
+        for table in (REGISTERED_ROBOTS, REGISTERED_BASES, REGISTERED_GRIPPERS):
+            if name in table:
+                classes.append(table[name])
+                break
+        else:
+            classes.append(robot_class(name))  # raises the registry's "unknown robot ... Did you mean"
+    return classes
+
+
+def _target(cls: type[PartModel], args: argparse.Namespace) -> LintTarget:
+    name = cls.__name__
+    if cls.family == "robot":
+        return robot_target(assembled(argparse.Namespace(**{**vars(args), "robot": name})), name)
+    return part_target(cls(idn=args.idn), name)
+
+
+def _counts(findings: Sequence[Finding]) -> str:
+    counts = Counter(f.severity for f in findings)
+    parts = [f"{counts[s]} {s}{'s' if counts[s] != 1 else ''}" for s in SEVERITIES if counts[s]]
+    return ", ".join(parts) or "no findings"
+
+
+def _print_text(name: str, findings: Sequence[Finding]) -> None:
+    for finding in findings:
+        where = str(finding.location) if finding.location else name
+        print(f"{where}: {finding.severity} {finding.code} {finding.subject}: {finding.why}")
+        print(f"    fix: {finding.fix}")
+    print(f"{name}: {_counts(findings)}")
+
+
+def _print_github(name: str, findings: Sequence[Finding]) -> None:
+    for finding in findings:
+        message = f"{finding.subject}: {finding.why}. Fix: {finding.fix}"
+        print(github_annotation(finding.severity, message, finding.location, f"{finding.code} ({name})"))
+
+
+def _as_json(finding: Finding) -> dict[str, object]:
+    return {
+        "code": finding.code,
+        "severity": finding.severity,
+        "subject": finding.subject,
+        "why": finding.why,
+        "fix": finding.fix,
+        **location_fields(finding.location),
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        classes = _classes([args.robot, *args.more])
+    except AssemblerError as error:
+        print_problems(error.problems, args.format)
+        return 1
+    results: list[tuple[str, list[Finding]]] = []
+    problems: list[Problem] = []
+    for cls in classes:
+        try:
+            findings = lint(_target(cls, args))
+        except AssemblerError as error:  # a part that does not assemble: reported like validate does
+            problems.extend(error.problems)
+            continue
+        results.append((cls.__name__, findings))
+        if args.format == "text":
+            _print_text(cls.__name__, findings)
+        elif args.format == "github":
+            _print_github(cls.__name__, findings)
+    if args.format == "json":
+        targets = [{"name": name, "findings": [_as_json(f) for f in found]} for name, found in results]
+        problem_items = [{"message": str(p), **location_fields(p.location)} for p in problems]
+        print(json.dumps({"targets": targets, "problems": problem_items}, indent=2))
+    elif problems:
+        print_problems(problems, args.format)
+    failed = bool(problems) or any(f.severity == "error" for _, found in results for f in found)
+    return 1 if failed else 0

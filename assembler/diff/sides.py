@@ -1,0 +1,96 @@
+"""The two things ``assembler diff`` compares: each a spec file, a registered name or FILE@REV.
+
+A side is loaded without registering it: two versions of one robot share a name, and neither
+may replace the registered one. Its class is made the way the catalog makes registered classes,
+but marked ``abstract`` so the registry's metaclass skips it, and it is compiled the way
+``assembler build`` compiles (robots with their default base and grippers; bases and grippers alone).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import mujoco
+
+from assembler.catalog import TABLES, kind_of, registered_document
+from assembler.diff.revision import load_at_revision, split_revision
+from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
+from assembler.loader import SPEC_SUFFIXES, LoadedSpec, load_paths
+from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, ManipulatorModel, PartModel, RobotModel
+from assembler.paths import display_path
+from assembler.registry import create_base, create_gripper
+from assembler.schema import PartSpec, RobotSpec
+
+DIFF_IDN = 0
+"""Both sides are built as instance 0, so their element names match."""
+
+
+@dataclass(frozen=True)
+class Side:
+    """One side of a diff: how the user named it, its validated spec, and the class it makes."""
+
+    label: str
+    part_class: type[PartModel]
+
+    @property
+    def spec(self) -> PartSpec:
+        """The validated spec (``extends`` resolved)."""
+        return self.part_class.spec
+
+    def compile(self) -> mujoco.MjModel:
+        """The compiled model: a robot with its default base and grippers, a base or gripper alone."""
+        part = self.part_class(idn=DIFF_IDN)
+        if not isinstance(part, RobotModel):
+            return part.compile_alone()
+        if part.default_base is not None:
+            part.add_base(create_base(part.default_base, idn=DIFF_IDN))
+        if isinstance(part, ManipulatorModel):
+            defaults = part.spec.default_grippers
+            for arm in part.arms:
+                gripper = defaults.get(arm)  # type: ignore[call-overload]
+                if gripper is not None:
+                    part.add_gripper(create_gripper(gripper, idn=f"{DIFF_IDN}_{arm}"), arm)
+        return part.get_model()
+
+
+def unregistered_class(loaded: LoadedSpec) -> type[PartModel]:
+    """The class a spec describes, as :func:`assembler.catalog.class_from_spec` makes it, unregistered."""
+    spec = loaded.spec
+    parent = (
+        MORPHOLOGY_CLASSES[spec.morphology] if isinstance(spec, RobotSpec) else KIND_CLASSES[kind_of(loaded)]
+    )
+    namespace = {
+        "abstract": True,  # the registry's metaclass skips it
+        "spec": spec,
+        "loaded": loaded,
+        "__doc__": spec.description,
+        "__module__": "assembler.specs",
+    }
+    return type(spec.name, (parent,), namespace)
+
+
+def _registered(name: str) -> type[PartModel]:
+    for table in TABLES.values():
+        if name in table:
+            return table[name]  # type: ignore[no-any-return]
+    names = sorted({n for table in TABLES.values() for n in table})
+    raise RegistryError(
+        f"'{name}' is neither a spec file, FILE@REVISION nor a registered name.{did_you_mean(name, names)} "
+        f"Registered: {summarize_names(names, limit=40)}"
+    )
+
+
+def load_side(reference: str) -> Side:
+    """A side from a spec file, ``file@revision`` or a registered robot, base or gripper name."""
+    revision = split_revision(reference)
+    if revision is not None:
+        return Side(reference, unregistered_class(load_at_revision(*revision)))
+    path = Path(reference)
+    if path.is_file():
+        (loaded,) = load_paths([path], registered_document)
+        return Side(reference, unregistered_class(loaded))
+    if reference.endswith(SPEC_SUFFIXES) or path.is_dir():
+        what = "a folder; give one spec file" if path.is_dir() else "no such file"
+        raise SpecError(f"{display_path(path)}: {what}")
+    return Side(reference, _registered(reference))

@@ -1,0 +1,12 @@
+"""Pictures of assembled robots: MuJoCo's offscreen renderer, auto-framing, PNG output (stdlib only).
+
+``render_robot(robot, views)`` returns an RGB array; ``encode_png`` turns it into PNG bytes. The
+scene (floor, lights) is added to a copy of the robot's MjSpec; the robot itself is not changed.
+"""
+
+from assembler.render.backend import RenderError, choose_backend
+from assembler.render.framing import VIEWS
+from assembler.render.picture import LABELS, render_robot
+from assembler.render.png import encode_png
+
+__all__ = ["LABELS", "VIEWS", "RenderError", "choose_backend", "encode_png", "render_robot"]
