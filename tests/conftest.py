@@ -59,6 +59,12 @@ init_qpos: [0.5, -0.5]
 
 
 @pytest.fixture(autouse=True)
+def isolated_cache(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The compiled-model cache of the test session lives in a temporary folder, never the user's."""
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path_factory.getbasetemp() / "model-cache"))
+
+
+@pytest.fixture(autouse=True)
 def isolated_registry() -> Iterator[None]:
     """Each test sees the shipped specs; whatever it registers is removed afterwards."""
     tables = (REGISTERED_ROBOTS, REGISTERED_BASES, REGISTERED_GRIPPERS)

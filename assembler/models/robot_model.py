@@ -14,10 +14,11 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
+from assembler.cache import load_or_compile
 from assembler.errors import AssemblerError, JointAttributeError, summarize_names
 from assembler.mjcf import compose
 from assembler.mjcf.emit import to_xml, write_atomically
-from assembler.mjcf.keyframe import compile_with_home
+from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
 from assembler.models.base_model import RobotBaseModel
 from assembler.models.joint_rules import JointValue
 from assembler.models.part import (
@@ -50,16 +51,29 @@ class RobotModel(PartModel):
         self._root_pos: FloatArray | None = None
         self._root_quat: FloatArray | None = None
         self._assembly: mujoco.MjSpec | None = None
+        self._home_keyframe: tuple[FloatArray, FloatArray] | None = None
+        self.use_cache = True
+        """Whether ``get_model()`` may answer from the compiled-model cache (``--no-cache`` sets False)."""
 
     # ----- assembly -----------------------------------------------------------------------
 
     @property
     def mjspec(self) -> mujoco.MjSpec:
-        """The assembly (robot, base, grippers) as a MuJoCo spec; rebuilt after ``add_*`` calls."""
+        """The assembly (robot, base, grippers) as a MuJoCo spec; rebuilt after ``add_*`` calls.
+        Once built, ``get_model()`` compiles it as it is (it may have been edited), never from cache."""
         if self._assembly is None:
-            self._assembly = compose.new_assembly(self.source.globals_xml)
-            self.build_into(self._assembly)
+            self._assembly = self._new_assembly()
+            if self._home_keyframe is not None:
+                # The model came from the cache: its keyframe is what compiling this spec writes.
+                key = self._assembly.add_key()
+                key.name = HOME_KEY
+                key.qpos, key.ctrl = (values.tolist() for values in self._home_keyframe)
         return self._assembly
+
+    def _new_assembly(self) -> mujoco.MjSpec:
+        assembly = compose.new_assembly(self.source.globals_xml)
+        self.build_into(assembly)
+        return assembly
 
     def build_into(self, assembly: mujoco.MjSpec) -> None:
         """Attach this robot, its base and its grippers to ``assembly`` (used for scenes too)."""
@@ -105,6 +119,7 @@ class RobotModel(PartModel):
 
     def _rebuild(self) -> None:
         self._assembly = None
+        self._home_keyframe = None
 
     def add_base(self, base: RobotBaseModel) -> None:
         """Merge ``base`` by its type: mount, mobile, legged or null. A second base is an error."""
@@ -132,7 +147,9 @@ class RobotModel(PartModel):
     @property
     def cameras(self) -> list[str]:
         """Every named camera in the assembly (prefixed), including those of its base and grippers."""
-        return [c.name for c in self.mjspec.cameras if c.name]
+        # A throwaway assembly when none is built yet, so reading names keeps the cache usable.
+        assembly = self._assembly if self._assembly is not None else self._new_assembly()
+        return [c.name for c in assembly.cameras if c.name]
 
     @property
     def models(self) -> list[PartModel]:
@@ -262,8 +279,16 @@ class RobotModel(PartModel):
         return f"{where}: robot '{type(self).__name__}'"
 
     def get_model(self) -> mujoco.MjModel:
-        """Compile the assembly (with its ``home`` keyframe) into a new ``mujoco.MjModel``."""
-        return compile_with_home(self.mjspec, self.assembly_home(), self._what())
+        """Compile the assembly (with its ``home`` keyframe) into a new ``mujoco.MjModel``; an unchanged
+        robot comes from the compiled-model cache (assembler.cache) unless ``use_cache`` is False."""
+        if self._assembly is not None or not self.use_cache:
+            return compile_with_home(self.mjspec, self.assembly_home(), self._what())
+        model = load_or_compile(
+            self, lambda: compile_with_home(self._new_assembly(), self.assembly_home(), self._what())
+        )
+        home = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
+        self._home_keyframe = (model.key_qpos[home].copy(), model.key_ctrl[home].copy())
+        return model
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:
         """Keep ``mujoco_model``, or compile one now."""

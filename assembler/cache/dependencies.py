@@ -1,0 +1,139 @@
+"""The files a compiled model was made from, recorded by size, modification time and content.
+
+A cache entry stores one :class:`Dependency` per file the compile read: each part's MJCF file,
+the files it includes, and every mesh, height field, skin and texture file. On lookup a file whose
+size and modification time are unchanged is taken as unchanged (as ``make`` and ccache do); one
+whose stat differs is hashed again, so touching a mesh keeps the entry and editing it does not.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import time
+import xml.etree.ElementTree as ET
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from assembler.models.part import PartModel
+
+_CHUNK = 1 << 20
+
+RECENT_NS = 2_000_000_000
+"""Files modified this recently are not trusted: MuJoCo's in-process asset cache compares times in
+whole seconds, so a compile may still see the previous content of a mesh edited within the same
+second (ccache refuses too-new files for the same kind of reason)."""
+
+
+@dataclass(frozen=True)
+class Dependency:
+    """One input file of a compile, as it was when the compile read it."""
+
+    path: str
+    size: int
+    mtime_ns: int
+    blake2b: str
+
+
+def content_digest(path: str) -> str:
+    """The file's BLAKE2b digest (hex)."""
+    digest = hashlib.blake2b(digest_size=32)
+    with open(path, "rb") as stream:
+        while chunk := stream.read(_CHUNK):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+class Recorder:
+    """Records the files of one compile: their stat before it and, afterwards (the store does it
+    in its writer thread, off the caller's path), their digests and stat again. A file that
+    changed in between, or shortly before, makes the record None, and the model is not stored:
+    it may not match the files."""
+
+    def __init__(self, paths: Iterable[str]) -> None:
+        self._recent = time.time_ns() - RECENT_NS
+        self._stats: dict[str, tuple[int, int]] | None = {}
+        try:
+            for path in sorted(set(paths)):
+                stat = os.stat(path)
+                self._stats[path] = (stat.st_size, stat.st_mtime_ns)
+        except OSError:
+            self._stats = None  # a missing file: the compile will say so
+
+    def result(self) -> list[Dependency] | None:
+        """The records; None if a file changed since the compile began or cannot be read."""
+        if self._stats is None:
+            return None
+        records = []
+        for path, (size, mtime_ns) in self._stats.items():
+            try:
+                digest = content_digest(path)
+                stat = os.stat(path)  # after hashing: a change while hashing shows here
+            except OSError:
+                return None
+            if (stat.st_size, stat.st_mtime_ns) != (size, mtime_ns) or mtime_ns > self._recent:
+                return None
+            records.append(Dependency(path, size, mtime_ns, digest))
+        return records
+
+
+def verify(dependencies: Sequence[Dependency]) -> list[Dependency] | None:
+    """The records refreshed to the files' current stat, or None when a file's content changed.
+
+    A record comes back unchanged (the same object) when its file's stat is unchanged, so the
+    caller can tell whether anything needs writing back.
+    """
+    current: list[Dependency] = []
+    for dependency in dependencies:
+        try:
+            stat = os.stat(dependency.path)
+            if stat.st_size == dependency.size and stat.st_mtime_ns == dependency.mtime_ns:
+                current.append(dependency)
+                continue
+            if stat.st_size != dependency.size or content_digest(dependency.path) != dependency.blake2b:
+                return None
+        except OSError:
+            return None
+        current.append(replace(dependency, mtime_ns=stat.st_mtime_ns))
+    return current
+
+
+def included_files(mjcf: Path) -> list[str]:
+    """Files pulled in by ``<include file=...>``, recursively.
+
+    MuJoCo resolves an include against the main file's folder; the including file's own folder
+    is tried too, so a dependency is never missed whichever rule a MuJoCo version follows.
+    """
+    found: list[str] = []
+    pending = [mjcf]
+    while pending:
+        current = pending.pop()
+        try:
+            root = ET.parse(current).getroot()
+        except (OSError, ET.ParseError):
+            continue  # MuJoCo already read it, or will say what is wrong
+        for element in root.iter("include"):
+            file = element.get("file") or ""
+            for folder in {mjcf.parent, current.parent}:
+                candidate = (folder / file).resolve()
+                if file and candidate.is_file() and str(candidate) not in found:
+                    found.append(str(candidate))
+                    pending.append(candidate)
+    return found
+
+
+def part_files(part: PartModel) -> list[str]:
+    """Every file a compile of ``part`` reads: its MJCF, included files, and asset files.
+
+    Asset paths are already absolute in the part's prepared spec (see assembler.mjcf.source).
+    """
+    spec = part.prepared
+    files = [str(part.source.path), *included_files(part.source.path)]
+    for group in (spec.meshes, spec.hfields, spec.skins):
+        files += [element.file for element in group if element.file]
+    for texture in spec.textures:
+        files += [file for file in (texture.file, *texture.cubefiles) if file]
+    return files

@@ -1,0 +1,252 @@
+"""The cache folder: one manifest and one model file per entry, written atomically, bounded in
+size with least-recently-used eviction, safe with several processes at once.
+
+There is no shared index that a crash or a race could corrupt: the folder is the index. Every
+file is written under a temporary name in the same folder and moved into place with one rename,
+so a reader sees a whole file or none; a writer killed mid-write leaves only a temporary file,
+removed by a later clean-up once it is old. A lookup touches the manifest, so its modification
+time is the entry's last use, and eviction (after each write) drops the least recently used
+entries until the folder fits the limit. Two processes filling one entry each write their own
+model file and the last manifest wins; the other model file becomes an orphan and is removed.
+Anything unreadable (a truncated manifest or model) is a miss and is removed, never an error.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import secrets
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import mujoco
+import numpy as np
+from numpy.typing import NDArray
+
+from assembler.cache.dependencies import Dependency, Recorder, verify
+from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, PROBE_BYTES, Entry
+
+TEMP_SUFFIX = ".tmp"
+GRACE_SECONDS = 600.0
+"""A temporary or unreferenced model file younger than this may belong to a writer still at work."""
+
+_OWN_FILE = re.compile(r"^\.?[0-9a-f]{40}(-[0-9a-f]{12}\.mjb|\.json)(\.\w+\.tmp)?$")
+"""Manifests, model files and their temporary files (see :class:`Entry` and ``_write``)."""
+
+_writers: list[threading.Thread] = []
+
+
+def wait_for_writes() -> None:
+    """Block until every entry this process started writing is in place (tests, benchmarks)."""
+    while _writers:
+        _writers.pop().join()
+
+
+@dataclass(frozen=True)
+class CacheInfo:
+    """What ``assembler cache info`` prints."""
+
+    directory: Path
+    entries: int
+    total_bytes: int
+    max_bytes: int
+
+
+def _descriptor_path(descriptor: int, fallback: Path) -> str:
+    """A path naming the open file itself, so eviction by another process cannot pull it away
+    between our checks and MuJoCo's read (and MuJoCo never logs a failed open)."""
+    for folder in ("/proc/self/fd", "/dev/fd"):
+        if os.path.isdir(folder):
+            return f"{folder}/{descriptor}"
+    return str(fallback)
+
+
+class ModelStore:
+    """Compiled models in ``directory``, at most ``max_bytes`` in all."""
+
+    def __init__(self, directory: Path, max_bytes: int) -> None:
+        self.directory = directory
+        self.max_bytes = max_bytes
+
+    # ----- lookup -------------------------------------------------------------------------
+
+    def _read_entry(self, key: str) -> Entry | None:
+        try:
+            text = (self.directory / (key + MANIFEST_SUFFIX)).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            return None
+        try:
+            entry = Entry.from_json(text)
+        except ValueError:
+            self._remove(key + MANIFEST_SUFFIX)
+            return None
+        return entry if entry.key == key else None
+
+    def _open_model(self, entry: Entry) -> mujoco.MjModel | None:
+        path = self.directory / entry.model
+        try:
+            with open(path, "rb") as stream:
+                if os.fstat(stream.fileno()).st_size != entry.model_bytes:
+                    return None
+                head = stream.read(PROBE_BYTES).hex()
+                stream.seek(-PROBE_BYTES, os.SEEK_END)
+                if head != entry.head or stream.read(PROBE_BYTES).hex() != entry.tail:
+                    return None
+                return mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
+        except (OSError, ValueError):
+            return None
+
+    def load(self, key: str) -> tuple[mujoco.MjModel, tuple[Dependency, ...]] | None:
+        """The model stored under ``key`` and its files, if every one of them is unchanged."""
+        entry = self._read_entry(key)
+        if entry is None:
+            return None
+        current = verify(entry.dependencies)
+        if current is None:
+            return None  # an input changed: the caller compiles and replaces the entry
+        model = self._open_model(entry)
+        if model is None:
+            self._discard(entry)
+            return None
+        refreshed = any(new is not old for new, old in zip(current, entry.dependencies, strict=True))
+        with contextlib.suppress(OSError):
+            if refreshed:  # touched but unchanged files: record their new stat, so we hash them once
+                self._write(entry.manifest, replace(entry, dependencies=tuple(current)))
+            self._touch(entry.manifest)
+        return model, tuple(current)
+
+    def _discard(self, entry: Entry) -> None:
+        """Remove a broken entry; its manifest only if no other process has replaced it since."""
+        latest = self._read_entry(entry.key)
+        if latest is not None and latest.model == entry.model:
+            self._remove(entry.manifest)
+        self._remove(entry.model)
+
+    def _touch(self, name: str) -> None:
+        """Mark an entry used now. The clock's nanoseconds, not the file system's coarser tick
+        (a few milliseconds), so uses in quick succession keep their order."""
+        now = time.time_ns()
+        os.utime(self.directory / name, ns=(now, now))
+
+    # ----- writing ------------------------------------------------------------------------
+
+    def _write(self, name: str, content: Entry | NDArray[np.uint8]) -> None:
+        self.directory.mkdir(parents=True, exist_ok=True)
+        handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=TEMP_SUFFIX, dir=self.directory)
+        try:
+            with os.fdopen(handle, "wb") as stream:
+                stream.write(content.to_json().encode() if isinstance(content, Entry) else content.data)
+            os.replace(temporary, self.directory / name)
+        except BaseException:
+            Path(temporary).unlink(missing_ok=True)
+            raise
+
+    def save(self, key: str, model: mujoco.MjModel, recorder: Recorder, label: str) -> None:
+        """Store ``model`` under ``key``, replacing an older entry, then evict down to the limit.
+
+        The model is serialised now (the caller may change it next); hashing its input files and
+        writing the entry happen in a background thread, so a cold load costs little more than
+        the compile. The interpreter waits for that thread at exit. An input that changed meanwhile
+        means nothing is stored; a cache that cannot be written (read-only, disk full) only means
+        no caching: never an error.
+        """
+        buffer = np.empty(mujoco.mj_sizeModel(model), dtype=np.uint8)
+        mujoco.mj_saveModel(model, None, buffer)
+        entry = Entry(
+            key=key,
+            model=f"{key}-{secrets.token_hex(6)}{MODEL_SUFFIX}",
+            model_bytes=buffer.size,
+            head=buffer[:PROBE_BYTES].tobytes().hex(),
+            tail=buffer[-PROBE_BYTES:].tobytes().hex(),
+            label=label,
+            dependencies=(),
+        )
+        writer = threading.Thread(
+            target=self._commit, args=(entry, buffer, recorder), name="assembler-cache-writer"
+        )
+        _writers.append(writer)
+        writer.start()
+
+    def _commit(self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder) -> None:
+        dependencies = recorder.result()
+        if dependencies is None:
+            return
+        entry = replace(entry, dependencies=tuple(dependencies))
+        key = entry.key
+        try:
+            self._write(entry.model, buffer)
+            previous = self._read_entry(key)
+            self._write(entry.manifest, entry)
+            self._touch(entry.manifest)
+        except OSError:
+            self._remove(entry.model)
+            return
+        if previous is not None and previous.model != entry.model:
+            self._remove(previous.model)
+        self.evict()
+
+    # ----- housekeeping -------------------------------------------------------------------
+
+    def _remove(self, *names: str) -> None:
+        for name in filter(None, names):
+            with contextlib.suppress(OSError):
+                (self.directory / name).unlink()
+
+    def _files(self) -> list[os.DirEntry[str]]:
+        """The cache's own files: eviction and ``clear`` never touch anything else in the folder."""
+        try:
+            with os.scandir(self.directory) as entries:
+                return [e for e in entries if _OWN_FILE.match(e.name) and e.is_file()]
+        except OSError:
+            return []
+
+    def evict(self) -> None:
+        """Remove stale temporary files and orphaned models, then the least recently used entries
+        until everything fits in ``max_bytes``."""
+        now = time.time()
+        manifests: list[tuple[int, str, int]] = []  # last use (ns), name, size
+        sizes: dict[str, tuple[int, float]] = {}
+        for item in self._files():
+            with contextlib.suppress(OSError):
+                stat = item.stat()
+                if item.name.endswith(MANIFEST_SUFFIX):
+                    manifests.append((stat.st_mtime_ns, item.name, stat.st_size))
+                else:
+                    sizes[item.name] = (stat.st_size, stat.st_mtime)
+        models: dict[str, str] = {}  # manifest -> its model file
+        for _, name, _ in manifests:
+            entry = self._read_entry(name.removesuffix(MANIFEST_SUFFIX))
+            if entry is not None:
+                models[name] = entry.model
+        referenced = set(models.values())
+        for name, (_, mtime) in list(sizes.items()):
+            if name not in referenced and now - mtime > GRACE_SECONDS:
+                self._remove(name)
+                del sizes[name]
+        total = sum(size for size, _ in sizes.values()) + sum(size for _, _, size in manifests)
+        for _, name, size in sorted(manifests):
+            if total <= self.max_bytes:
+                break
+            model = models.get(name, "")
+            total -= size + sizes.get(model, (0, 0.0))[0]
+            self._remove(name, model)
+
+    def info(self) -> CacheInfo:
+        """Location, number of entries, bytes used and the limit."""
+        files = self._files()
+        total = 0
+        for item in files:
+            with contextlib.suppress(OSError):
+                total += item.stat().st_size
+        entries = sum(1 for item in files if item.name.endswith(MANIFEST_SUFFIX))
+        return CacheInfo(self.directory, entries, total, self.max_bytes)
+
+    def clear(self) -> CacheInfo:
+        """Remove every entry (only the cache's own files); returns what was there."""
+        before = self.info()
+        self._remove(*(item.name for item in self._files()))
+        return before

@@ -1,0 +1,39 @@
+"""``assembler cache info|clear``: where the compiled-model cache is, how full, and emptying it."""
+
+from __future__ import annotations
+
+import argparse
+
+from assembler.cache import cache_disabled, clear, default_store
+from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size
+from assembler.cli.common import table
+from assembler.paths import display_path
+
+
+def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = commands.add_parser("cache", help="show or empty the compiled-model cache")
+    parser.add_argument("action", choices=("info", "clear"), help="info: location and size; clear: empty it")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    store = default_store()
+    if args.action == "clear":
+        before = clear(store)
+        print(
+            f"removed {before.entries} {'entry' if before.entries == 1 else 'entries'} "
+            f"({format_size(before.total_bytes)}) "
+            f"from {display_path(before.directory)}"
+        )
+        return 0
+    info = store.info()
+    status = f"disabled ({DISABLE_VARIABLE} is set)" if cache_disabled() else "enabled"
+    rows = [
+        ("location", display_path(info.directory)),
+        ("entries", str(info.entries)),
+        ("size", format_size(info.total_bytes)),
+        ("limit", f"{format_size(info.max_bytes)} ({MAX_BYTES_VARIABLE})"),
+        ("status", status),
+    ]
+    print(table(rows))
+    return 0

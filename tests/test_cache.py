@@ -1,0 +1,410 @@
+"""The compiled-model cache: a hit equals a fresh compile; every input change is a miss; touching a
+file is not; it can be switched off, stays within its size, shrugs off broken entries, and two
+processes can fill one entry at once. Every test uses its own cache folder, never the user's."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+import assembler
+from assembler import cache
+from assembler.cache import default_store, wait_for_writes
+from assembler.cli import main
+from assembler.paths import package_root
+
+TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+
+MESH_ARM = """\
+<mujoco model="meshy">
+  <compiler angle="radian" meshdir="meshes"/>
+  <asset><mesh name="tet" file="tet.obj"/></asset>
+  <worldbody>
+    <body name="base">
+      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/>
+      <body name="link1" pos="0 0 0.1">
+        <joint name="joint1" axis="0 0 1" range="-3 3"/>
+        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
+        <body name="link2" pos="0 0 0.1">
+          <joint name="joint2" axis="0 1 0" range="-2 2"/>
+          <geom name="link2_col" type="capsule" fromto="0 0 0 0.2 0 0" size="0.02" mass="0.5"/>
+          <body name="right_hand" pos="0.2 0 0"/>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="act1" joint="joint1" kp="50" ctrlrange="-3 3"/>
+    <position name="act2" joint="joint2" kp="50" ctrlrange="-2 2"/>
+  </actuator>
+</mujoco>
+"""
+
+PARENT_SPEC = "name: MeshArm\nmjcf: meshy.xml\ninit_qpos: [0.5, -0.5]\njoint_defaults: {damping: 0.3}\n"
+CHILD_SPEC = "name: MeshArmSoft\nextends: MeshArm\njoint_defaults: {armature: 0.05}\n"
+
+COMPARED_FIELDS = (
+    "body_pos",
+    "body_quat",
+    "body_mass",
+    "body_inertia",
+    "jnt_range",
+    "dof_damping",
+    "dof_armature",
+    "dof_frictionloss",
+    "geom_size",
+    "geom_rgba",
+    "actuator_gainprm",
+    "mesh_vert",
+    "key_qpos",
+    "key_ctrl",
+    "qpos0",
+)
+
+
+@pytest.fixture(autouse=True)
+def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
+    """A fresh cache folder per test; the working folder is the test's too, to catch MUJOCO_LOG.TXT."""
+    folder = tmp_path / "model-cache"
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    monkeypatch.chdir(tmp_path)
+    yield folder
+    wait_for_writes()
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
+
+
+@pytest.fixture
+def mesh_arm(tmp_path: Path) -> Path:
+    """A spec folder: a parent spec with a mesh, a child that extends it; returns the folder."""
+    folder = tmp_path / "arm"
+    (folder / "meshes").mkdir(parents=True)
+    for name, text in [
+        ("meshes/tet.obj", TETRAHEDRON),
+        ("meshy.xml", MESH_ARM),
+        ("mesh_arm.yaml", PARENT_SPEC),
+        ("mesh_arm_soft.yaml", CHILD_SPEC),
+    ]:
+        edit(folder / name, text, seconds_ago=3600)
+    assembler.register_specs(folder)
+    return folder
+
+
+def edit(path: Path, text: str, seconds_ago: float = 10) -> None:
+    """Write ``path`` as a user would have some time ago: the cache does not store models made
+    from files modified in the last seconds (MuJoCo's own asset cache may not have seen them)."""
+    path.write_text(text)
+    then = time.time() - seconds_ago
+    os.utime(path, (then, then))
+
+
+def lookups() -> tuple[int, int, int]:
+    """(hits, misses, bypassed) so far in this process."""
+    return cache.counts.hits, cache.counts.misses, cache.counts.bypassed
+
+
+def load(name: str, **kwargs: object) -> mujoco.MjModel:
+    """A robot's model through the cache, with its entry written before returning."""
+    model = assembler.assemble(name, **kwargs).get_model()  # type: ignore[arg-type]
+    wait_for_writes()
+    return model
+
+
+def counted(action: Callable[[], object]) -> tuple[int, int, int]:
+    """How many hits, misses and bypasses ``action`` caused."""
+    before = lookups()
+    action()
+    wait_for_writes()
+    return tuple(after - first for after, first in zip(lookups(), before, strict=True))  # type: ignore[return-value]
+
+
+def fresh(name: str) -> mujoco.MjModel:
+    robot = assembler.assemble(name)
+    robot.use_cache = False
+    return robot.get_model()
+
+
+def assert_same_model(ours: mujoco.MjModel, reference: mujoco.MjModel) -> None:
+    for size in ("nq", "nv", "nu", "nbody", "njnt", "ngeom", "nmesh", "nkey", "nsite", "nnames"):
+        assert getattr(ours, size) == getattr(reference, size), size
+    for field in COMPARED_FIELDS:
+        assert np.array_equal(getattr(ours, field), getattr(reference, field)), field
+    assert bytes(ours.names) == bytes(reference.names)
+
+
+def entries(folder: Path) -> list[Path]:
+    return sorted(folder.glob("*.json"))
+
+
+# ----- a hit is the same model --------------------------------------------------------------
+
+
+ROBOTS = ["Sparrow7"] + (["Panda"] if package_root("robosuite") else [])
+
+
+@pytest.mark.parametrize("name", ROBOTS)
+def test_cached_model_equals_a_fresh_compile(name: str, private_cache: Path) -> None:
+    assert counted(lambda: load(name)) == (0, 1, 0)
+    before = lookups()
+    cached = load(name)
+    assert lookups()[0] == before[0] + 1
+    assert_same_model(cached, fresh(name))
+    assert len(entries(private_cache)) == 1
+
+
+def test_a_hit_keeps_names_xml_and_keyframe_of_a_compile() -> None:
+    load("Sparrow7")
+    robot = assembler.assemble("Sparrow7")
+    model = robot.get_model()
+    reference = assembler.assemble("Sparrow7")
+    reference.use_cache = False
+    assert robot.joints == reference.joints and robot.actuators == reference.actuators
+    assert robot.cameras == reference.cameras
+    assert robot.get_xml() == reference.get_xml()
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    assert data.qpos[:7] == pytest.approx([0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785])
+
+
+def test_build_bundle_from_a_hit_keeps_the_home_keyframe(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["build", "Sparrow7", "--bundle", "first"]) == 0
+    assert main(["build", "Sparrow7", "--bundle", "second"]) == 0
+    first, second = Path("first/Sparrow7.xml").read_text(), Path("second/Sparrow7.xml").read_text()
+    assert '<key name="home"' in second and first == second
+
+
+def test_an_edited_mjspec_is_compiled_as_edited() -> None:
+    load("Sparrow7")
+    robot = assembler.assemble("Sparrow7")
+    robot.mjspec.joint("robot0_joint1").range = [-0.5, 0.5]
+    assert counted(robot.get_model) == (0, 0, 0)  # compiled directly: the cache is not asked
+    assert robot.get_model().joint("robot0_joint1").range.tolist() == [-0.5, 0.5]
+
+
+# ----- every input is in the key or the manifest --------------------------------------------
+
+
+def test_touching_a_mesh_without_changing_it_still_hits(mesh_arm: Path) -> None:
+    load("MeshArm")
+    mesh = mesh_arm / "meshes" / "tet.obj"
+    later = time.time() + 60
+    os.utime(mesh, (later, later))
+    assert counted(lambda: load("MeshArm")) == (1, 0, 0)
+    assert counted(lambda: load("MeshArm")) == (1, 0, 0)
+
+
+def test_editing_a_mesh_is_a_miss_and_the_new_mesh_is_used(mesh_arm: Path) -> None:
+    before = load("MeshArm")
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    assert counted(lambda: load("MeshArm")) == (0, 1, 0)
+    after = load("MeshArm")
+    assert not np.array_equal(after.mesh_vert, before.mesh_vert)
+    assert_same_model(after, fresh("MeshArm"))
+
+
+def test_repeated_loads_in_one_process_are_independent_and_still_see_edits(mesh_arm: Path) -> None:
+    load("MeshArm")  # compiled and stored
+    first = load("MeshArm")  # read from disk and handed over
+    second = load("MeshArm")  # read again: kept in memory, a copy handed over
+    second.body_mass[:] = 99.0
+    third = load("MeshArm")  # a copy of the kept model
+    assert_same_model(third, first)
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    assert counted(lambda: load("MeshArm")) == (0, 1, 0)
+
+
+def test_a_model_from_a_file_edited_a_moment_ago_is_not_stored(mesh_arm: Path, private_cache: Path) -> None:
+    (mesh_arm / "meshes" / "tet.obj").write_text(TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.2"))
+    assert counted(lambda: load("MeshArm")) == (0, 1, 0)
+    assert entries(private_cache) == []
+
+
+def test_editing_the_mjcf_is_a_miss(mesh_arm: Path) -> None:
+    load("MeshArm")
+    xml = mesh_arm / "meshy.xml"
+    edit(xml, MESH_ARM.replace('range="-2 2"', 'range="-1 1"'))
+    assembler.register_specs(mesh_arm)  # a new robot instance reads the edited file
+    assert counted(lambda: load("MeshArm")) == (0, 1, 0)
+    assert load("MeshArm").joint("robot0_joint2").range.tolist() == [-1, 1]
+
+
+def test_editing_a_parent_spec_is_a_miss_for_the_child(mesh_arm: Path) -> None:
+    assert load("MeshArmSoft").joint("robot0_joint1").damping[0] == pytest.approx(0.3)
+    assembler.register_specs(mesh_arm)  # registering the same files again: same key
+    assert counted(lambda: load("MeshArmSoft")) == (1, 0, 0)
+    edit(mesh_arm / "mesh_arm.yaml", PARENT_SPEC.replace("0.3", "0.7"))
+    assembler.register_specs(mesh_arm)
+    assert counted(lambda: load("MeshArmSoft")) == (0, 1, 0)
+    assert load("MeshArmSoft").joint("robot0_joint1").damping[0] == pytest.approx(0.7)
+
+
+def test_a_different_spec_value_is_a_miss(mesh_arm: Path) -> None:
+    load("MeshArmSoft")
+    edit(mesh_arm / "mesh_arm_soft.yaml", CHILD_SPEC.replace("0.05", "0.09"))
+    assembler.register_specs(mesh_arm)
+    assert counted(lambda: load("MeshArmSoft")) == (0, 1, 0)
+    assert load("MeshArmSoft").joint("robot0_joint2").armature == pytest.approx(0.09)
+
+
+def test_api_changes_before_get_model_are_part_of_the_key() -> None:
+    load("Sparrow7")
+    robot = assembler.assemble("Sparrow7")
+    robot.set_joint_attribute("damping", np.full(7, 0.5))
+    robot.set_base_xpos(np.array([0.5, 0.0, 0.0]))
+    assert counted(robot.get_model) == (0, 1, 0)
+    model = load("Sparrow7")  # the default robot is still its own entry
+    changed = robot.get_model()
+    assert changed.joint("robot0_joint3").damping[0] == 0.5 != model.joint("robot0_joint3").damping[0]
+    assert not np.array_equal(changed.body("robot0_base").pos, model.body("robot0_base").pos)
+    assert counted(lambda: load("Sparrow7", idn=1)) == (0, 1, 0)
+
+
+def test_a_hand_written_subclass_is_not_cached() -> None:
+    parent = assembler.REGISTERED_ROBOTS["Sparrow7"]
+    handmade = type("Sparrow7Custom", (parent,), {"__module__": __name__})
+    assert counted(lambda: handmade(idn=0).get_model()) == (0, 0, 1)
+
+
+# ----- switching it off ---------------------------------------------------------------------
+
+
+def test_no_cache_flag_compiles_and_stores_nothing(private_cache: Path) -> None:
+    assert counted(lambda: main(["build", "Sparrow7", "--no-cache", "-o", "out.xml"])) == (0, 0, 0)
+    assert entries(private_cache) == []
+    assert counted(lambda: main(["build", "Sparrow7", "-o", "out.xml"])) == (0, 1, 0)
+    assert len(entries(private_cache)) == 1
+
+
+def test_environment_variable_disables_the_cache(
+    private_cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_NO_CACHE", "1")
+    assert counted(lambda: load("Sparrow7")) == (0, 0, 1)
+    assert not private_cache.exists()
+
+
+# ----- the store ----------------------------------------------------------------------------
+
+
+def test_least_recently_used_entries_are_evicted_first(
+    private_cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    load("Sparrow7", idn=0)
+    one_entry = default_store().info().total_bytes
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(int(2.5 * one_entry)))
+    load("Sparrow7", idn=1)
+    load("Sparrow7", idn=0)  # a hit: idn 0 is now more recent than idn 1
+    load("Sparrow7", idn=2)  # three entries do not fit: idn 1 goes
+    assert len(entries(private_cache)) == 2
+    assert counted(lambda: load("Sparrow7", idn=0)) == (1, 0, 0)
+    assert counted(lambda: load("Sparrow7", idn=2)) == (1, 0, 0)
+    assert counted(lambda: load("Sparrow7", idn=1)) == (0, 1, 0)
+    assert default_store().info().total_bytes <= 2.5 * one_entry
+
+
+def test_a_truncated_model_file_is_a_miss_and_is_replaced(private_cache: Path) -> None:
+    load("Sparrow7")
+    (model_file,) = private_cache.glob("*.mjb")
+    model_file.write_bytes(model_file.read_bytes()[:1000])
+    assert counted(lambda: load("Sparrow7")) == (0, 1, 0)
+    assert_same_model(load("Sparrow7"), fresh("Sparrow7"))
+    assert not model_file.exists()
+
+
+def test_a_truncated_manifest_is_a_miss_and_is_removed(private_cache: Path) -> None:
+    load("Sparrow7")
+    (manifest,) = entries(private_cache)
+    manifest.write_text(manifest.read_text()[:50])
+    assert counted(lambda: load("Sparrow7")) == (0, 1, 0)
+    assert json.loads(manifest.read_text())["label"] == "Sparrow70 + Pedestal0 + PincerGripper0_right"
+
+
+def test_leftovers_of_a_killed_writer_are_removed_once_old(private_cache: Path) -> None:
+    private_cache.mkdir()
+    key = "0" * 40
+    old_temp, young_temp = private_cache / f".{key}.json.abc.tmp", private_cache / f".{key}.json.def.tmp"
+    orphan = private_cache / f"{key}-123456789abc.mjb"
+    unrelated = private_cache / "notes.json"  # not the cache's: never removed
+    for path in (old_temp, young_temp, orphan, unrelated):
+        path.write_bytes(b"\0" * 100)
+    hour_ago = time.time() - 3600
+    for path in (old_temp, orphan, unrelated):
+        os.utime(path, (hour_ago, hour_ago))
+    load("Sparrow7")
+    assert not old_temp.exists() and not orphan.exists()
+    assert young_temp.exists() and unrelated.exists()
+
+
+WORKER = textwrap.dedent(
+    """
+    import assembler, assembler.cache
+    assembler.assemble("Sparrow7").get_model()
+    print(assembler.cache.counts.misses + assembler.cache.counts.hits)
+    """
+)
+
+
+def test_two_processes_filling_one_entry_both_succeed(private_cache: Path) -> None:
+    workers = [
+        subprocess.Popen(
+            [sys.executable, "-c", WORKER], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        )
+        for _ in range(2)
+    ]
+    results = [worker.communicate(timeout=120) for worker in workers]
+    assert [worker.returncode for worker in workers] == [0, 0], results
+    assert [out.strip() for out, _ in results] == ["1", "1"]
+    assert len(entries(private_cache)) == 1
+    assert_same_model(assembler.assemble("Sparrow7").get_model(), fresh("Sparrow7"))
+
+
+# ----- the command --------------------------------------------------------------------------
+
+
+def test_cache_info_and_clear(private_cache: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    load("Sparrow7")
+    assert main(["cache", "info"]) == 0
+    rows = dict(line.split(None, 1) for line in capsys.readouterr().out.splitlines())
+    assert rows["location"] == "model-cache" and rows["entries"] == "1" and rows["status"] == "enabled"
+    assert rows["limit"] == "2.0 GB (ASSEMBLER_CACHE_MAX_BYTES)"
+    (private_cache / "notes.txt").write_text("mine")
+    assert main(["cache", "clear"]) == 0
+    assert capsys.readouterr().out.startswith("removed 1 entry (")
+    assert [path.name for path in private_cache.iterdir()] == ["notes.txt"]
+
+
+def test_a_bad_size_limit_is_one_line_naming_the_variable(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", "lots")
+    assert main(["cache", "info"]) == 1
+    assert capsys.readouterr().err == (
+        "ASSEMBLER_CACHE_MAX_BYTES: expected a size such as 2G, 500M or 1048576, got 'lots'\n"
+    )
+
+
+# ----- the benchmark harness ----------------------------------------------------------------
+
+
+def test_benchmark_quick_run_writes_every_measure(tmp_path: Path) -> None:
+    repository = Path(__file__).resolve().parent.parent
+    output = tmp_path / "bench"
+    command = [sys.executable, "-m", "benchmarks", "--quick", "--robots", "Sparrow7", "--output", str(output)]
+    result = subprocess.run(command, cwd=repository, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr[-2000:]
+    figures = json.loads((output / "results.json").read_text())["figures"]
+    measures = {figure["measure"] for figure in figures}
+    assert measures == {"assemble", "cold load", "warm load", "repeated load", "scale", "start-up"}
+    report = (output / "results.md").read_text()
+    assert "| warm load | Sparrow7 |" in report and f"MuJoCo {mujoco.__version__}" in report
