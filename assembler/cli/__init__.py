@@ -12,10 +12,24 @@ import sys
 from collections.abc import Sequence
 
 from assembler.catalog import add_spec_folders
-from assembler.cli import build, inspect, listing, scene, schema, validate
+from assembler.cli import (
+    build,
+    cache,
+    diff,
+    experiment,
+    inspect,
+    lint,
+    listing,
+    render,
+    scene,
+    schema,
+    validate,
+    variants,
+)
 from assembler.errors import AssemblerError
+from assembler.paths import allowing
 
-COMMANDS = (listing, validate, build, scene, inspect, schema)
+COMMANDS = (listing, validate, lint, build, scene, experiment, variants, inspect, schema, diff, render, cache)
 """Subcommand modules, in the order ``assembler --help`` lists them."""
 
 
@@ -30,6 +44,14 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="DIR",
         help="also register the specs in DIR (repeatable)",
     )
+    parser.add_argument(
+        "--allow-path",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="let specs read files below DIR too (repeatable); by default a spec reads only its own "
+        "folder, the shipped specs and assets, and package:// paths (see SECURITY.md)",
+    )
     commands = parser.add_subparsers(dest="command", required=True)
     for command in COMMANDS:
         command.add_parser(commands)
@@ -39,10 +61,10 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        add_spec_folders(args.specs)
-        return int(args.run(args))
+        with allowing(args.allow_path):
+            add_spec_folders(args.specs)
+            return int(args.run(args))
     except AssemblerError as error:
         for problem in error.problems:
             print(str(problem), file=sys.stderr)
         return 1
-

@@ -12,24 +12,27 @@ from assembler.catalog import register_specs
 from assembler.errors import AssemblerError
 from assembler.loader import SPEC_SUFFIXES
 from assembler.models import RobotModel
+from assembler.overrides import Override, parse_overrides
 from assembler.registry import create_robot, robot_class
 
 
 def robot_name(reference: str) -> str:
     """A registered robot name, registering the spec first when given a spec file path."""
     if reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file():
-        (cls, *_) = register_specs(reference)
-        return cls.__name__
+        registered = register_specs(reference)
+        if not registered:  # a folder named like a spec file
+            raise AssemblerError(f"{reference}: no spec in it; give a spec file or a robot name")
+        return registered[0].__name__
     return reference
 
 
-def bare_robot(reference: str, idn: int) -> RobotModel:
-    """A robot alone (no base, no grippers), by registered name or spec file."""
-    return create_robot(robot_name(reference), idn=idn)
+def bare_robot(reference: str, idn: int, changes: Sequence[Override] = ()) -> RobotModel:
+    """A robot alone (no base, no grippers), by registered name or spec file, with overrides."""
+    return create_robot(robot_name(reference), idn=idn, overrides=changes)
 
 
 def add_assembly_arguments(parser: argparse.ArgumentParser) -> None:
-    """The flags that choose what is assembled: robot, idn, base and grippers."""
+    """The flags that choose what is assembled: robot, idn, base, grippers and ``--set`` overrides."""
     parser.add_argument("robot", help="registered robot name or spec file")
     parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
     parser.add_argument("--base", help="a registered base instead of the robot's default")
@@ -42,6 +45,28 @@ def add_assembly_arguments(parser: argparse.ArgumentParser) -> None:
         help="gripper per arm (NAME may be none)",
     )
     parser.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
+    parser.add_argument(
+        "--no-cache", action="store_true", help="compile even if the compiled-model cache has this robot"
+    )
+    add_override_argument(parser)
+
+
+def add_override_argument(parser: argparse.ArgumentParser) -> None:
+    """``--set PATH=VALUE``: change a spec field for this run (the registered robot stays as it is)."""
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        dest="overrides",
+        metavar="PATH=VALUE",
+        help="override a spec field, typed by the schema (repeatable), "
+        "e.g. joint_defaults.damping=0.2 or init_qpos[3]=-2.0",
+    )
+
+
+def override_flags(args: argparse.Namespace) -> list[Override]:
+    """The ``--set`` flags, parsed (a bad one is an error naming the flag)."""
+    return parse_overrides(getattr(args, "overrides", None) or [], label="--set ")
 
 
 def gripper_choices(values: list[str]) -> dict[str, str | None]:
@@ -65,7 +90,9 @@ def assembled(args: argparse.Namespace) -> RobotModel:
     if args.no_grippers:
         arms = getattr(robot_class(name).spec, "arms", ())
         grippers = {arm: None for arm in arms}
-    return assemble(name, idn=args.idn, base=base, grippers=grippers)
+    robot = assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=override_flags(args))
+    robot.use_cache = not getattr(args, "no_cache", False)
+    return robot
 
 
 def table(rows: Sequence[Sequence[str]]) -> str:

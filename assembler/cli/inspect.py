@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from assembler.cli.common import bare_robot, table
+from assembler.cli.common import add_override_argument, bare_robot, override_flags, table
 from assembler.paths import display_path
 from assembler.schema import JOINT_RULE_ATTRIBUTES
 
@@ -15,11 +15,13 @@ def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
     parser.add_argument("robot", help="registered robot name or spec file")
     parser.add_argument("--idn", type=int, default=0)
     parser.add_argument("--format", choices=("text", "json"), default="text")
+    add_override_argument(parser)
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    robot = bare_robot(args.robot, args.idn)
+    changes = override_flags(args)
+    robot = bare_robot(args.robot, args.idn, changes)
     if args.format == "json":
         joints = {
             robot.naming_prefix + joint: {
@@ -33,6 +35,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"{type(robot).__name__}: {robot.spec.morphology}, {robot.dof} dof, prefix {robot.naming_prefix}")
     if loaded is not None:
         print(f"spec: {loaded.source}")
+    if changes:
+        print("overrides: " + ", ".join(f"{c.key}={json.dumps(c.value, default=str)}" for c in changes))
     print(f"mjcf: {display_path(robot.source.path)}")
     attributes = list(JOINT_RULE_ATTRIBUTES) + sorted(
         {a for values in robot.joint_values.values() for a in values} - set(JOINT_RULE_ATTRIBUTES)

@@ -2,6 +2,7 @@
 
 A failed build must never leave a partial file or clobber the user's previous output, so every
 file is written to a temporary file in the target folder and moved into place with one rename.
+A bundle writes only inside its folder: asset names from the MJCF are reduced to plain names.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import ctypes
 import functools
 import hashlib
 import os
+import re
 import shutil
 import tempfile
 import xml.etree.ElementTree as ET
@@ -18,6 +20,9 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import mujoco
+
+from assembler.errors import AssemblerError
+from assembler.paths import display_path
 
 XML_SIGNIFICANT_DIGITS = 15
 """Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""
@@ -77,9 +82,29 @@ def _mode_for(path: Path) -> int:
 
 
 def write_atomically(path: Path, content: str | bytes) -> None:
-    """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+    """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half.
+
+    A file system error (no permission, disk full, a folder in the way) is an
+    :class:`AssemblerError` naming the path; the old file, if any, is left as it was.
+    """
     data = content.encode() if isinstance(content, str) else content
+    with _cannot_write(path):
+        _write_replacing(path, data)
+
+
+@contextlib.contextmanager
+def _cannot_write(path: Path) -> Iterator[None]:
+    try:
+        yield
+    except OSError as error:
+        reason = error.strerror or str(error)
+        if isinstance(error, (FileExistsError, NotADirectoryError)):  # mkdir where a file is
+            reason = "a folder on its path is a file"
+        raise AssemblerError(f"cannot write {display_path(path)}: {reason}") from None
+
+
+def _write_replacing(path: Path, data: bytes) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
@@ -121,6 +146,17 @@ FILE_ATTRIBUTES: tuple[str, ...] = (
 """Attributes of MJCF asset elements that name a file (cube textures have six)."""
 
 
+_UNSAFE_CHARACTERS = re.compile(r"[^A-Za-z0-9._-]")
+
+
+def _safe_name(name: str) -> str:
+    """``name`` as a plain file name in the bundle: letters, digits and ``. _ -``, not hidden.
+
+    Asset names come from a stranger's MJCF; whatever they hold, the copy stays in ``assets/``.
+    """
+    return _UNSAFE_CHARACTERS.sub("_", name).lstrip(".") or "asset"
+
+
 def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
     """Write ``directory/xml_name`` and copies of every asset file under ``directory/assets``.
 
@@ -128,9 +164,14 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
     files with one base name get distinct names (``link.stl``, ``link_1.stl``). The paths are
     rewritten in the emitted text: MjSpec would try to open relative paths from the source folder.
     """
+    if Path(xml_name).name != xml_name or xml_name in ("", ".", ".."):
+        raise AssemblerError(f"bundle: expected a file name for the XML, got '{xml_name}'")
     root = ET.fromstring(to_xml(spec))
     assets = directory / "assets"
-    assets.mkdir(parents=True, exist_ok=True)
+    with _cannot_write(assets):
+        assets.mkdir(parents=True, exist_ok=True)
+    if not assets.resolve().is_relative_to(directory.resolve()):  # a link planted in the folder
+        raise AssemblerError(f"{display_path(assets)} leads out of {display_path(directory)}; remove it")
     placed: dict[str, str] = {}  # absolute source -> relative target
     taken: dict[str, str] = {}  # target name -> content digest
 
@@ -139,12 +180,14 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
             return placed[file]
         source = Path(file)
         digest = _digest(source)
-        name, n = source.name, 0
+        name = _safe_name(source.name)
+        stem, suffix, n = Path(name).stem, Path(name).suffix, 0
         while name in taken and taken[name] != digest:
             n += 1
-            name = f"{source.stem}_{n}{source.suffix}"
+            name = f"{stem}_{n}{suffix}"
         if name not in taken:
-            _copy_atomically(source, assets / name)
+            with _cannot_write(assets / name):
+                _copy_atomically(source, assets / name)
             taken[name] = digest
         placed[file] = f"assets/{name}"
         return placed[file]
