@@ -197,8 +197,34 @@ def read_yaml_text(path: Path, shown: str) -> str:
         ) from None
 
 
+_FAST_LOADER: Any = getattr(yaml, "CSafeLoader", None)
+"""libyaml's composer (when PyYAML was built with it): several times faster than the pure-Python one."""
+
+_OPENING = (yaml.MappingStartEvent, yaml.SequenceStartEvent)
+_CLOSING = (yaml.MappingEndEvent, yaml.SequenceEndEvent)
+
+
+def _fast_compose(text: str) -> yaml.Node | None:
+    """The node graph composed by libyaml, after a flat scan of its events checked the nesting depth
+    (libyaml's composer recurses in C, where no depth limit would stop it)."""
+    depth = 0
+    for event in yaml.parse(text, Loader=_FAST_LOADER):
+        if isinstance(event, _OPENING):
+            depth += 1
+            if depth > MAX_YAML_DEPTH:
+                raise yaml.YAMLError("too deep")
+        elif isinstance(event, _CLOSING):
+            depth -= 1
+    return yaml.compose(text, Loader=_FAST_LOADER)
+
+
 def _compose(text: str, file: str) -> yaml.Node | None:
     """The document's node graph (aliases not yet expanded), or a positioned :class:`SpecError`."""
+    if _FAST_LOADER is not None:
+        try:
+            return _fast_compose(text)
+        except yaml.YAMLError:
+            pass  # composed again below, where the error gets its exact words and position
     loader: _DepthLimitedLoader | None = None
     try:
         loader = _DepthLimitedLoader(text, file)  # its reader checks the characters at once
