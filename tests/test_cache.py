@@ -257,6 +257,19 @@ def test_a_different_spec_value_is_a_miss(mesh_arm: Path) -> None:
     assert load("MeshArmSoft").joint("robot0_joint2").armature == pytest.approx(0.09)
 
 
+def test_changing_an_override_is_a_miss_and_repeating_it_a_hit() -> None:
+    def damped(value: float) -> mujoco.MjModel:
+        robot = assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": value})
+        model = robot.get_model()
+        wait_for_writes()
+        return model
+
+    assert counted(lambda: damped(0.2)) == (0, 1, 0)
+    assert counted(lambda: damped(0.3)) == (0, 1, 0)
+    assert counted(lambda: damped(0.2)) == (1, 0, 0)
+    assert damped(0.3).joint("robot0_joint1").damping[0] == pytest.approx(0.3)
+
+
 def test_api_changes_before_get_model_are_part_of_the_key() -> None:
     load("Sparrow7")
     robot = assembler.assemble("Sparrow7")
