@@ -13,6 +13,7 @@ package a ``package://`` reference names, or a folder the user allowed (``--allo
 from __future__ import annotations
 
 import contextlib
+import functools
 import importlib.util
 import os
 from collections.abc import Iterable, Iterator
@@ -71,7 +72,14 @@ def package_root(package: str) -> Path | None:
 def allowed_folders() -> list[Path]:
     """The folders the user allowed beyond the defaults (from ``ASSEMBLER_ALLOW_PATHS``)."""
     value = os.environ.get(ALLOW_VARIABLE, "")
-    return [Path(folder).expanduser().resolve() for folder in value.split(os.pathsep) if folder]
+    return [_resolved_folder(Path(folder).expanduser()) for folder in value.split(os.pathsep) if folder]
+
+
+@functools.lru_cache(maxsize=256)
+def _resolved_folder(folder: Path) -> Path:
+    # Root folders are resolved once per process: confine() checks every mesh of every part
+    # against them, and resolving means one lstat per path component each time.
+    return folder.resolve()
 
 
 def allow_paths(*folders: str | Path) -> None:
@@ -101,7 +109,7 @@ def allowing(folders: Iterable[str | Path]) -> Iterator[None]:
 
 def trusted_folders() -> list[Path]:
     """Folders every spec may read: the shipped specs and assets and the user's allowed folders."""
-    return [shipped_specs_dir().resolve(), shipped_assets_dir().resolve(), *allowed_folders()]
+    return [_resolved_folder(shipped_specs_dir()), _resolved_folder(shipped_assets_dir()), *allowed_folders()]
 
 
 _homes: dict[Path, set[Path]] = {}
@@ -121,11 +129,11 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
     """
     try:
         resolved = path.resolve()
-        roots = [*(home.resolve() for home in homes), *trusted_folders()]
+        roots = [*(_resolved_folder(home) for home in homes), *trusted_folders()]
     except (OSError, ValueError, RuntimeError) as problem:  # a loop of links, a NUL byte
         raise error(f"{what}{path}: cannot resolve this path ({problem})") from None
     if any(resolved.is_relative_to(root) for root in roots):
-        _homes.setdefault(resolved, set()).update(home.resolve() for home in homes)
+        _homes.setdefault(resolved, set()).update(_resolved_folder(home) for home in homes)
         return resolved
     written = Path(os.path.normpath(os.path.abspath(path)))
     link = f" (a link to {display_path(resolved)})" if resolved != written else ""

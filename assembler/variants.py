@@ -16,7 +16,6 @@ import itertools
 import json
 import os
 from collections.abc import Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
@@ -194,6 +193,9 @@ def write_variants(plan: VariantPlan, folder: str | Path, jobs: int | None = Non
     if workers <= 1:
         results = [_build(job) for job in work]
     else:
+        # Imported here: multiprocessing costs ~50 ms, which every `import assembler` would pay.
+        from concurrent.futures import ProcessPoolExecutor
+
         with ProcessPoolExecutor(
             workers, initializer=_register_user_specs, initargs=(plan.spec_paths,)
         ) as pool:
