@@ -23,7 +23,7 @@ from assembler.overrides import Override, parse_path
 from assembler.paths import display_path
 from assembler.scene import Scene, place_robots, robot_reference
 from assembler.schema import ExperimentRobot, ExperimentSpec
-from assembler.yaml_source import LocatedDocument, parse_yaml
+from assembler.yaml_source import LocatedDocument, parse_yaml, read_yaml_text
 
 
 @dataclass
@@ -52,11 +52,7 @@ class Experiment:
 def read_experiment(path: str | Path) -> tuple[ExperimentSpec, LocatedDocument]:
     """Read and validate an experiment file, with file:line:col on every problem."""
     file = Path(path)
-    try:
-        text = file.read_text(encoding="utf-8-sig")
-    except OSError as error:
-        raise SpecError(f"{display_path(file)}: cannot read the experiment file: {error.strerror}") from None
-    document = parse_yaml(text, display_path(file))
+    document = parse_yaml(read_yaml_text(file, display_path(file)), display_path(file))
     try:
         return ExperimentSpec.model_validate(document.data), document
     except ValidationError as error:

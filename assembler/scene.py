@@ -22,9 +22,9 @@ from assembler.loader import SPEC_SUFFIXES, problems_from_validation
 from assembler.mjcf import compose
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.models import RobotModel
-from assembler.paths import display_path
+from assembler.paths import confine, display_path
 from assembler.schema import SceneSpec
-from assembler.yaml_source import parse_yaml
+from assembler.yaml_source import parse_yaml, read_yaml_text
 
 FLOOR_XML = """<mujoco>
   <asset>
@@ -58,7 +58,7 @@ class Scene:
 def load_scene_spec(path: str | Path) -> SceneSpec:
     """Read and validate a scene file, with file:line:col on every problem."""
     file = Path(path)
-    document = parse_yaml(file.read_text(encoding="utf-8-sig"), display_path(file))
+    document = parse_yaml(read_yaml_text(file, display_path(file)), display_path(file))
     try:
         return SceneSpec.model_validate(document.data)
     except ValidationError as error:
@@ -68,7 +68,9 @@ def load_scene_spec(path: str | Path) -> SceneSpec:
 def robot_reference(reference: str, folder: Path | None = None) -> str:
     """A registered robot name; a robot spec file (relative to ``folder``) is registered first."""
     if reference.endswith(SPEC_SUFFIXES):
-        (cls,) = register_specs((folder or Path.cwd()) / reference)
+        home = folder or Path.cwd()
+        # A scene or experiment from a stranger names robot files as a spec names its parents.
+        (cls,) = register_specs(confine(home / reference, [home], "robot spec "))
         return cls.__name__
     return reference
 

@@ -126,3 +126,25 @@ def test_a_list_as_name_with_an_unknown_parent_is_one_line(
     assert main(["build", str(spec)]) == 1
     (line,) = capsys.readouterr().err.splitlines()
     assert line.startswith(f"{spec}:2:10: extends: unknown spec 'Sparow7'. Did you mean 'Sparrow7'? Known: ")
+
+
+@pytest.mark.parametrize("command", ["scene", "experiment"])
+def test_scene_and_experiment_files_get_the_spec_file_rules(
+    command: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    missing, latin1, outside = tmp_path / "missing.yaml", tmp_path / "latin1.yaml", tmp_path / "outside.yaml"
+    latin1.write_bytes("name: caf\xe9\n".encode("latin-1"))
+    outside.write_text(f"kind: {command}\nname: Outside\nrobots:\n  - robot: ../elsewhere/arm.yaml\n")
+    (tmp_path.parent / "elsewhere").mkdir(exist_ok=True)
+    (tmp_path.parent / "elsewhere" / "arm.yaml").write_text("name: Arm\nmjcf: arm.xml\n")
+    for file, expected in [
+        (missing, "cannot read the file: No such file or directory"),
+        (latin1, "the file is not UTF-8 text (byte 9); save it as UTF-8"),
+        (
+            outside,
+            "robot spec " + str(tmp_path.parent / "elsewhere" / "arm.yaml") + " is outside the folders",
+        ),
+    ]:
+        assert main([command, str(file)]) == 1
+        err = capsys.readouterr().err
+        assert expected in err and "Traceback" not in err, err
