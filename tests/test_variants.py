@@ -152,3 +152,16 @@ def test_flag_mistakes_stop_before_anything_is_written(
     code, _, err = variants(capsys, "Finch6", *flags, "-o", str(out))
     assert code == 1 and not out.exists()
     assert err.startswith(message) and len(err.splitlines()) == 1
+
+
+def test_no_cache_reaches_the_worker_processes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    cache = tmp_path / "cache"
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(cache))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    grid = ["variants", "Sparrow7", "--grid", "joint_defaults.damping=0.05,0.1", "--jobs", "2"]
+    assert main([*grid, "-o", str(tmp_path / "a"), "--no-cache"]) == 0
+    assert not cache.exists() or not any(cache.iterdir())
+    assert main([*grid, "-o", str(tmp_path / "b")]) == 0
+    assert any(cache.glob("*.mjb"))

@@ -9,12 +9,13 @@ from pathlib import Path
 from typing import Literal
 
 from assembler.assembly import DEFAULT
+from assembler.cache.settings import DISABLE_VARIABLE
 from assembler.cli.common import add_assembly_arguments, gripper_choices, robot_name
 from assembler.errors import AssemblerError
 from assembler.loader import SPEC_SUFFIXES
 from assembler.paths import display_path
 from assembler.registry import robot_class
-from assembler.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
+from assembler.variants import MANIFEST, Draw, Grid, VariantPlan, VariantResult, failures, write_variants
 
 
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -75,9 +76,23 @@ def plan_from(args: argparse.Namespace) -> VariantPlan:
     )
 
 
+def _write(plan: VariantPlan, args: argparse.Namespace) -> list[VariantResult]:
+    """Write the variants; ``--no-cache`` reaches the worker processes through their environment."""
+    before = os.environ.get(DISABLE_VARIABLE)
+    if getattr(args, "no_cache", False):
+        os.environ[DISABLE_VARIABLE] = "1"
+    try:
+        return write_variants(plan, args.output, args.jobs or os.cpu_count())
+    finally:
+        if before is None:
+            os.environ.pop(DISABLE_VARIABLE, None)
+        else:
+            os.environ[DISABLE_VARIABLE] = before
+
+
 def run(args: argparse.Namespace) -> int:
     plan = plan_from(args)
-    results = write_variants(plan, args.output, args.jobs or os.cpu_count())
+    results = _write(plan, args)
     written = sum(r.file is not None for r in results)
     manifest = display_path(Path(args.output) / MANIFEST)
     folder = display_path(args.output)
