@@ -35,27 +35,6 @@ def own_robots() -> list[str]:
     return [name for name, cls in assembler.REGISTERED_ROBOTS.items() if _spec_folder(cls) == folder]
 
 
-def robosuite_xml(name: str, idn: int = 0) -> str:
-    """robosuite's MJCF of a robot with its default base and grippers (robots/robot.py:161-223)."""
-    from robosuite.models.bases import robot_base_factory
-    from robosuite.models.grippers import gripper_factory
-    from robosuite.models.robots import create_robot
-    from robosuite.utils.mjcf_utils import array_to_string
-
-    model = create_robot(name, idn=idn)
-    if model.default_base is not None:
-        model.add_base(robot_base_factory(model.default_base, idn=idn))
-    for arm in model.arms:
-        gripper = gripper_factory(model.default_gripper[arm], idn=f"{idn}_{arm}")
-        root = gripper.worldbody.find("body")
-        if arm in model.gripper_mount_pos_offset:
-            root.set("pos", array_to_string(model.gripper_mount_pos_offset[arm]))
-        if arm in model.gripper_mount_quat_offset:
-            root.set("quat", array_to_string(model.gripper_mount_quat_offset[arm]))
-        model.add_gripper(gripper, model.eef_name[arm])
-    return str(model.get_xml())
-
-
 def scale_scene(count: int) -> Scene:
     """``count`` Sparrow7 robots, each with its default base and gripper, one metre apart."""
     robots = [{"robot": SCALE_ROBOT, "pos": (float(i % 8), float(i // 8), 0.0)} for i in range(count)]

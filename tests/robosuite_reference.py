@@ -12,11 +12,11 @@ TOLERANCE = 1e-6
 """Relative tolerance of every numeric comparison (the parity issue's figure)."""
 
 
-def robosuite_model(
+def robosuite_xml(
     robot: str, base: str | None = "default", grippers: dict[str, str | None] | None = None, idn: int = 0
-) -> mujoco.MjModel:
-    """robosuite's compiled model: default base, default gripper per arm with the robot's gripper
-    mount offsets, as ``Robot.load_model`` assembles it (robots/robot.py:161-223)."""
+) -> str:
+    """robosuite's MJCF text: default base, default gripper per arm with the robot's gripper mount
+    offsets, as ``Robot.load_model`` assembles it (robots/robot.py:161-223)."""
     from robosuite.models.bases import robot_base_factory
     from robosuite.models.grippers import gripper_factory
     from robosuite.models.robots import create_robot
@@ -35,7 +35,14 @@ def robosuite_model(
         if arm in model.gripper_mount_quat_offset:
             root.set("quat", array_to_string(model.gripper_mount_quat_offset[arm]))
         model.add_gripper(gripper, model.eef_name[arm])
-    return mujoco.MjModel.from_xml_string(model.get_xml())
+    return str(model.get_xml())
+
+
+def robosuite_model(
+    robot: str, base: str | None = "default", grippers: dict[str, str | None] | None = None, idn: int = 0
+) -> mujoco.MjModel:
+    """robosuite's compiled model of the same assembly as :func:`robosuite_xml`."""
+    return mujoco.MjModel.from_xml_string(robosuite_xml(robot, base, grippers, idn))
 
 
 def _names(model: mujoco.MjModel, kind: mujoco.mjtObj, count: int) -> list[str]:
