@@ -248,3 +248,27 @@ def test_a_part_with_its_own_options_leaves_no_log_file(parts: Path, tmp_path: P
     robot = assembler.assemble("TwoLink", grippers={"right": "TestPinch"})
     assert robot.get_model().opt.timestep == 0.002
     assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
+
+
+EMPTY_SUPPORT_MJCF = """\
+<mujoco model="empty_support">
+  <worldbody>
+    <body name="support">
+      <joint name="joint_mobile_forward" type="slide" axis="1 0 0"/>
+      <site name="center" size="0.01"/>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+"""robosuite's NullMobileBase in miniature: a moving support body with no mass of its own."""
+
+
+def test_a_massless_mobile_base_compiles_alone_with_a_stand_in_load(
+    write,
+) -> None:
+    write("empty_support.xml", EMPTY_SUPPORT_MJCF)
+    (cls,) = assembler.register_specs(
+        write("empty_support.yaml", "kind: base\nname: EmptySupport\ntype: mobile\nmjcf: empty_support.xml\n")
+    )
+    model = cls(idn=0).compile_alone()
+    assert model.body("mobilebase0_support_stand_in_load").mass[0] == 1.0

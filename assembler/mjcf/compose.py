@@ -161,6 +161,17 @@ def move_world_elements(part: mujoco.MjSpec, assembly: mujoco.MjSpec, prefix: st
             part.delete(element)
 
 
+STAND_IN_MASS = 1.0
+"""kg: the load a mobile or legged base carries on its support when compiled without a robot."""
+
+
+def add_stand_in_load(assembly: mujoco.MjSpec, support_body: str) -> None:
+    """A small mass on the support body, standing in for the robot a mobile or legged base carries
+    (robosuite's NullMobileBase has no mass of its own on its moving support)."""
+    support = find_body(assembly, support_body, "base support body")
+    support.add_body(name=support_body + "_stand_in_load", mass=STAND_IN_MASS, inertia=[0.01, 0.01, 0.01])
+
+
 def add_sites_at_world(assembly: mujoco.MjSpec, part: mujoco.MjSpec, prefix: str) -> None:
     """A null base contributes only its sites, placed in the world frame (robosuite's add_null_base)."""
     for site in part.sites:

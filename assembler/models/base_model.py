@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from typing import ClassVar
 
+import mujoco
 import numpy as np
 
+from assembler.mjcf import compose
 from assembler.models.groups import robosuite_group
 from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
@@ -37,6 +39,11 @@ class RobotBaseModel(PartModel):
     def naming_prefix(self) -> str:
         """``fixed_mount{idn}_``, ``mobilebase{idn}_``, ``leg{idn}_`` or ``nullbase{idn}_``."""
         return f"{PREFIXES[self.spec.type]}{self.idn}_"
+
+    def _complete_alone(self, assembly: mujoco.MjSpec) -> None:
+        # A mobile or legged base carries the robot on its support body; alone, it gets a stand-in.
+        if self.spec.type in ("mobile", "legged"):
+            compose.add_stand_in_load(assembly, self.naming_prefix + self.spec.support_body)
 
     @property
     def top_offset(self) -> FloatArray:

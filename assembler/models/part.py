@@ -185,10 +185,14 @@ class PartModel(metaclass=RegisteringMeta):
         """Compile this part on its own (as ``assembler validate --compile`` does for bases and grippers)."""
         assembly = compose.new_assembly(self.source.globals_xml)
         compose.attach_at_world(assembly, self.part_spec(), self.naming_prefix)
+        self._complete_alone(assembly)
         where = self.loaded.source if self.loaded is not None else type(self).__qualname__
         return compile_with_home(
             assembly, self.home_qpos(), f"{where}: {self.family} '{type(self).__name__}'"
         )
+
+    def _complete_alone(self, assembly: mujoco.MjSpec) -> None:
+        """What a part needs around it to compile on its own; nothing for most parts."""
 
     # ----- names --------------------------------------------------------------------------
 
