@@ -25,6 +25,14 @@ def assemble(
     ``"{idn}_{arm}"``, so their prefix is e.g. ``gripper0_right_``, as in robosuite. ``overrides``
     change the robot's spec fields for this assembly only (see :func:`assembler.create_robot`)."""
     model = create_robot(robot, idn=idn, overrides=overrides)
+    return equip(model, base, grippers)
+
+
+def equip(
+    model: RobotModel, base: str | None = DEFAULT, grippers: Mapping[str, str | None] | None = None
+) -> RobotModel:
+    """Give a created robot its base and grippers as :func:`assemble` does (same defaults and idn)."""
+    robot, idn = type(model).__name__, model.idn
     base_name = model.default_base if base == DEFAULT else base
     if base_name is not None:
         model.add_base(create_base(base_name, idn=idn))

@@ -13,13 +13,13 @@ from pathlib import Path
 
 import mujoco
 
+from assembler.assembly import equip
 from assembler.catalog import TABLES, kind_of, registered_document
 from assembler.diff.revision import load_at_revision, split_revision
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
 from assembler.loader import SPEC_SUFFIXES, LoadedSpec, load_paths
-from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, ManipulatorModel, PartModel, RobotModel
+from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, PartModel, RobotModel
 from assembler.paths import display_path
-from assembler.registry import create_base, create_gripper
 from assembler.schema import PartSpec, RobotSpec
 
 DIFF_IDN = 0
@@ -43,14 +43,7 @@ class Side:
         part = self.part_class(idn=DIFF_IDN)
         if not isinstance(part, RobotModel):
             return part.compile_alone()
-        if part.default_base is not None:
-            part.add_base(create_base(part.default_base, idn=DIFF_IDN))
-        if isinstance(part, ManipulatorModel):
-            defaults = part.spec.default_grippers
-            for arm in part.arms:
-                gripper = defaults.get(arm)  # type: ignore[call-overload]
-                if gripper is not None:
-                    part.add_gripper(create_gripper(gripper, idn=f"{DIFF_IDN}_{arm}"), arm)
+        equip(part)
         return part.get_model()
 
 
