@@ -95,9 +95,26 @@ class _Builder:
         self.marks: dict[DataPath, Location] = {}
         self.problems: list[Problem] = []
         self.values = 0
+        self._open: set[int] = set()  # collections being built: an alias back to one is a cycle
         self._constructor = yaml.constructor.SafeConstructor()
 
     def build(self, node: yaml.Node, path: DataPath) -> Any:
+        if id(node) in self._open:
+            raise SpecError(
+                Problem(
+                    "a recursive alias (an anchor used inside itself) has no value; write the values out",
+                    _location(self.file, node),
+                    dotted(path) or None,
+                )
+            )
+        if len(path) > MAX_YAML_DEPTH:  # aliases can nest deeper than the text does
+            raise SpecError(
+                Problem(
+                    f"nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels once aliases are expanded",
+                    _location(self.file, node),
+                    dotted(path) or None,
+                )
+            )
         self.values += 1
         if self.values > MAX_YAML_VALUES:
             raise SpecError(
@@ -121,10 +138,14 @@ class _Builder:
                     dotted(path) or None,
                 )
             )
-        if isinstance(node, yaml.MappingNode):
-            return self._mapping(node, path)
-        if isinstance(node, yaml.SequenceNode):
-            return [self.build(item, (*path, index)) for index, item in enumerate(node.value)]
+        if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+            self._open.add(id(node))
+            try:
+                if isinstance(node, yaml.MappingNode):
+                    return self._mapping(node, path)
+                return [self.build(item, (*path, index)) for index, item in enumerate(node.value)]
+            finally:
+                self._open.discard(id(node))
         return self._scalar(node, path)
 
     def _scalar(self, node: yaml.Node, path: DataPath) -> Any:

@@ -57,6 +57,7 @@ CASES = [
     pytest.param(b"just some text\n", ["{spec}:1:1: a spec must be a YAML mapping (key: value lines)"], id="text-document"),
     pytest.param(ARM + b"---\nname: B\n", ["{spec}:3:1: YAML syntax error: expected a single document in the stream but found another document"], id="two-documents"),
     pytest.param(ARM + b"1: x\n", ["{spec}:3:1: keys must be text, got int"], id="number-key"),
+    pytest.param(ARM + b"init_qpos: &x [*x]\n", ["{spec}:3:12: init_qpos[0]: a recursive alias (an anchor used inside itself) has no value; write the values out"], id="recursive-alias"),
     pytest.param(ARM + b"description: 2024-01-01\n", ["{spec}:3:14: description: YAML tag 'tag:yaml.org,2002:timestamp' is not allowed; specs are plain data"], id="date"),
     pytest.param(b"name: !!python/object/apply:os.system [touch pwned]\nmjcf: twolink.xml\n", ["{spec}:1:7: name: YAML tag 'tag:yaml.org,2002:python/object/apply:os.system' is not allowed; specs are plain data"], id="python-tag"),
     pytest.param(b"d: &d {damping: 0.1}\n" + ARM + b"joint_defaults:\n  <<: *d\n", ["{spec}:5:3: joint_defaults: YAML merge keys ('<<') are not supported; write the keys out"], id="merge-key"),

@@ -104,7 +104,6 @@ def test_a_second_base_is_an_error(parts: Path) -> None:
 
 def test_missing_support_body_is_named(parts: Path, write, monkeypatch: pytest.MonkeyPatch) -> None:  # type: ignore[no-untyped-def]
     monkeypatch.setenv("ASSEMBLER_ALLOW_PATHS", str(parts.parent))  # the MJCF sits in a sibling folder
-    write("parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n")
     assembler.register_specs(
         write(
             "parts2/nosupport.yaml", "kind: base\nname: NoSupport\ntype: mobile\nmjcf: ../parts/mount.xml\n"
@@ -272,3 +271,26 @@ def test_a_massless_mobile_base_compiles_alone_with_a_stand_in_load(
     )
     model = cls(idn=0).compile_alone()
     assert model.body("mobilebase0_support_stand_in_load").mass[0] == 1.0
+
+
+def test_world_level_elements_of_a_robot_stay_in_the_world_on_a_mobile_base(
+    parts: Path, two_link: Path
+) -> None:
+    text = two_link.with_suffix(".xml").read_text()
+    text = text.replace(
+        "<worldbody>",
+        """<asset>
+    <mesh name="marker" vertex="0 0 0  0.1 0 0  0 0.1 0  0 0 0.1"/>
+    <material name="paint" rgba="1 0 0 1"/>
+  </asset>
+  <worldbody>
+    <geom name="floor_marker" type="mesh" mesh="marker" material="paint" group="1" contype="0" conaffinity="0"/>
+    <camera name="overview" pos="2 0 1" xyaxes="0 1 0 -0.5 0 1"/>""",
+        1,
+    )
+    two_link.with_suffix(".xml").write_text(text)
+    model = assembler.assemble("TwoLink", base="TestMobile").get_model()
+    geom, camera = model.geom("robot0_floor_marker"), model.camera("robot0_overview")
+    assert geom.bodyid[0] == 0 and camera.bodyid[0] == 0  # the world, not the moving base
+    assert model.mesh(int(geom.dataid[0])).name == "robot0_marker"
+    assert model.material(int(geom.matid[0])).name == "robot0_paint"

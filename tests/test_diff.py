@@ -203,6 +203,17 @@ def test_unknown_revision_is_one_line(
     assert len(err.splitlines()) == 1
 
 
+def test_a_revision_is_never_read_as_a_git_option(
+    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path
+) -> None:
+    write("robots/twolink.xml", TWO_LINK_MJCF)
+    spec = write("robots/twolink.yaml", TWO_LINK_SPEC)
+    git(tmp_path, "init", "-q")
+    code, _, err = run(capsys, "diff", f"{spec}@--output={tmp_path / 'x'}", str(spec))
+    assert code == 1 and "is not a revision; name a commit, branch or tag" in err
+    assert not list(tmp_path.glob("x*"))
+
+
 def test_panda_against_a_softer_variant(capsys: pytest.CaptureFixture[str], write: Write) -> None:
     pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
     soft = write(

@@ -94,6 +94,15 @@ def test_a_repair_that_changes_nothing_is_an_error(write: Callable[[str, str], P
         _gripper(write, stale)
 
 
+def test_a_set_that_the_file_already_has_is_a_stale_repair(write: Callable[[str, str], Path]) -> None:
+    already = (
+        ALL_FIXES
+        + "  - element: compiler\n    set: {angle: radian}\n    why: the same setting a second time\n"
+    )
+    with pytest.raises(MjcfError, match=r"mjcf_fixes on <compiler> changed nothing"):
+        _gripper(write, already)
+
+
 def test_a_repair_must_say_exactly_one_thing(write: Callable[[str, str], Path]) -> None:
     two_actions = "mjcf_fixes:\n  - element: default\n    remove: [group]\n    set: {a: b}\n    why: two actions at once\n"
     with pytest.raises(

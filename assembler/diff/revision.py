@@ -21,9 +21,11 @@ from assembler.yaml_source import LocatedDocument, parse_yaml
 def split_revision(reference: str) -> tuple[Path, str] | None:
     """``specs/x.yaml@HEAD~1`` -> (path, revision); None when ``reference`` names no revision."""
     path, sep, revision = reference.rpartition("@")
-    if sep and revision and path.endswith(SPEC_SUFFIXES):
-        return Path(path), revision
-    return None
+    if not (sep and revision and path.endswith(SPEC_SUFFIXES)):
+        return None
+    if revision.startswith("-"):  # git would read it as an option (e.g. --output=FILE)
+        raise SpecError(f"{reference}: '{revision}' is not a revision; name a commit, branch or tag")
+    return Path(path), revision
 
 
 def _git(folder: Path, *arguments: str) -> str:

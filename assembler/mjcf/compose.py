@@ -118,7 +118,7 @@ def attach_robot_on_support(
 
 
 _NOT_COPIED = frozenset(
-    {"id", "signature", "info", "plugin", "classname", "name", "compiler", "parent", "frame", "material"}
+    {"id", "signature", "info", "plugin", "classname", "name", "compiler", "parent", "frame"}
 )
 """Element properties that identify it, tie it to its spec, or cannot be set; the rest are copied."""
 
@@ -141,6 +141,10 @@ def move_actuators_last(assembly: mujoco.MjSpec, names: Sequence[str]) -> None:
         new.name = name
 
 
+_PREFIXED_REFERENCES = ("material", "meshname", "hfieldname", "targetbody")
+"""Fields of a geom, site, camera or light that name another element of the same part."""
+
+
 def move_world_elements(part: mujoco.MjSpec, assembly: mujoco.MjSpec, prefix: str) -> None:
     """Keep a part's world-level geoms, sites, cameras and lights in the world (as robosuite does)
     when its root body is attached somewhere else, e.g. under a mobile base's support body."""
@@ -156,8 +160,9 @@ def move_world_elements(part: mujoco.MjSpec, assembly: mujoco.MjSpec, prefix: st
             copy = add()
             copy_properties(element, copy)
             copy.name = prefix + element.name if element.name else ""
-            if getattr(element, "material", ""):
-                copy.material = prefix + element.material
+            for reference in _PREFIXED_REFERENCES:  # names of the part's own elements get its prefix
+                if getattr(element, reference, ""):
+                    setattr(copy, reference, prefix + getattr(element, reference))
             part.delete(element)
 
 

@@ -120,9 +120,9 @@ def _write_replacing(path: Path, data: bytes) -> None:
 
 def _copy_atomically(source: Path, target: Path) -> None:
     handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    os.fchmod(handle, _mode_for(target))
-    os.close(handle)
     try:
+        os.fchmod(handle, _mode_for(target))
+        os.close(handle)
         shutil.copyfile(source, temporary)
         os.replace(temporary, target)
     except BaseException:

@@ -23,9 +23,9 @@ def apply_fixes(root: ET.Element, fixes: Sequence[MjcfFix]) -> list[str]:
             if not elements:
                 elements = [ET.Element(fix.element)]
                 root.insert(0, elements[0])  # sections such as <compiler> come before what they govern
+            changed = sum(any(element.get(k) != v for k, v in fix.set.items()) for element in elements)
             for element in elements:
                 element.attrib.update(fix.set)
-            changed = len(elements)
         if not changed:
             stale.append(f"mjcf_fixes on <{fix.element}> changed nothing; delete it if the file is fixed")
     return stale
