@@ -421,3 +421,55 @@ def test_benchmark_quick_run_writes_every_measure(tmp_path: Path) -> None:
     assert measures == {"assemble", "cold load", "warm load", "repeated load", "scale", "start-up"}
     report = (output / "results.md").read_text()
     assert "| warm load | Sparrow7 |" in report and f"MuJoCo {mujoco.__version__}" in report
+
+
+# ----- files that change between making a robot and compiling it -----------------------------
+
+
+def test_an_mjcf_edited_after_the_robot_was_made_is_not_stored_under_its_new_content(mesh_arm: Path) -> None:
+    robot = assembler.assemble("MeshArm")  # parses meshy.xml now
+    edit(mesh_arm / "meshy.xml", MESH_ARM.replace('size="0.05 0.05"', 'size="0.09 0.05"'), seconds_ago=30)
+    robot.get_model()  # compiled from what was parsed: the old radius
+    wait_for_writes()
+    assert load("MeshArm").geom("robot0_base_col").size[0] == pytest.approx(0.09)
+
+
+def test_an_included_file_edited_between_two_robots_is_read_again(mesh_arm: Path) -> None:
+    edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="1 0 0 1"/></default></mujoco>', 3600)
+    edit(mesh_arm / "meshy.xml", MESH_ARM.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'), 3600)
+    assembler.register_specs(mesh_arm)
+    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.5, 0.0, 1.0]  # recoloured
+    edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="0 0 1 1" group="1"/></default></mujoco>', 30)
+    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.0, 1.0, 1.0]
+
+
+def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, private_cache: Path) -> None:
+    """``package://`` resolves per environment: two installs of a package must not share entries."""
+    spec = tmp_path / "fake.yaml"
+    spec.write_text("name: FakeBot\nmjcf: package://fakebot/robot.xml\n")
+    sizes = []
+    for install, radius in (("a", "0.3"), ("b", "0.9")):
+        package = tmp_path / install / "fakebot"
+        (package / "meshes").mkdir(parents=True)
+        (package / "__init__.py").write_text("")
+        edit(package / "meshes" / "tet.obj", TETRAHEDRON, 3600)
+        edit(package / "robot.xml", MESH_ARM.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
+        script = (
+            "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "
+            "m = assembler.assemble(cls.__name__).get_model(); assembler.cache.wait_for_writes(); "
+            "print(m.geom('robot0_base_col').size[0])"
+        )
+        environment = {
+            **os.environ,
+            "PYTHONPATH": str(tmp_path / install),
+            "ASSEMBLER_ALLOW_PATHS": str(tmp_path),
+        }
+        done = subprocess.run(
+            [sys.executable, "-c", script, str(spec)],
+            env=environment,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        sizes.append(float(done.stdout.split()[-1]))
+    assert sizes == [0.3, 0.9]

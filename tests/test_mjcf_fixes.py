@@ -109,3 +109,11 @@ def test_a_repair_must_say_exactly_one_thing(write: Callable[[str, str], Path]) 
         SpecError, match=r"mjcf_fixes\[0\].*give exactly one of keep_first_of_repeated_names, remove, set"
     ):
         _gripper(write, two_actions)
+
+
+def test_repairs_are_refused_on_a_file_with_includes(write: Callable[[str, str], Path]) -> None:
+    write("parts.xml", "<mujoco><default><geom rgba='1 0 0 1'/></default></mujoco>")
+    write("flawed.xml", FLAWED_GRIPPER.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'))
+    (cls,) = assembler.register_specs(write("flawed.yaml", SPEC.format(fixes=ALL_FIXES)))
+    with pytest.raises(MjcfError, match=r"mjcf_fixes cannot be used on a file that includes other files"):
+        cls(idn=0)

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import mujoco
 
-from assembler.cache.dependencies import Recorder, part_files
+from assembler.cache.dependencies import Recorder, part_files, source_files
 from assembler.cache.key import robot_key
 from assembler.cache.memory import RecentModels
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
@@ -88,7 +88,8 @@ def load_or_compile(robot: RobotModel, compile_model: Callable[[], mujoco.MjMode
         return _recent.offer(place, *found)
     counts.misses += 1
     parts = [robot, *robot.models]
-    recorder = Recorder(file for part in parts for file in part_files(part))  # stat before compiling
+    read_earlier = {path: stat for part in parts for path, stat in source_files(part).items()}
+    recorder = Recorder((file for part in parts for file in part_files(part)), read_earlier)
     model = compile_model()
     store.save(key, model, recorder, " + ".join(part.name for part in parts))
     return model

@@ -11,10 +11,8 @@ from __future__ import annotations
 import hashlib
 import os
 import time
-import xml.etree.ElementTree as ET
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -53,11 +51,15 @@ class Recorder:
     changed in between, or shortly before, makes the record None, and the model is not stored:
     it may not match the files."""
 
-    def __init__(self, paths: Iterable[str]) -> None:
+    def __init__(
+        self, paths: Iterable[str], read_earlier: Mapping[str, tuple[int, int]] | None = None
+    ) -> None:
+        """``read_earlier``: files already read before the compile (a part's MJCF and its includes,
+        parsed when the part was made), with their stat from then: a change since then is a change."""
         self._recent = time.time_ns() - RECENT_NS
-        self._stats: dict[str, tuple[int, int]] | None = {}
+        self._stats: dict[str, tuple[int, int]] | None = dict(read_earlier or {})
         try:
-            for path in sorted(set(paths)):
+            for path in sorted(set(paths) - set(self._stats)):
                 stat = os.stat(path)
                 self._stats[path] = (stat.st_size, stat.st_mtime_ns)
         except OSError:
@@ -101,37 +103,18 @@ def verify(dependencies: Sequence[Dependency]) -> list[Dependency] | None:
     return current
 
 
-def included_files(mjcf: Path) -> list[str]:
-    """Files pulled in by ``<include file=...>``, recursively.
-
-    MuJoCo resolves an include against the main file's folder; the including file's own folder
-    is tried too, so a dependency is never missed whichever rule a MuJoCo version follows.
-    """
-    found: list[str] = []
-    pending = [mjcf]
-    while pending:
-        current = pending.pop()
-        try:
-            root = ET.parse(current).getroot()
-        except (OSError, ET.ParseError):
-            continue  # MuJoCo already read it, or will say what is wrong
-        for element in root.iter("include"):
-            file = element.get("file") or ""
-            for folder in {mjcf.parent, current.parent}:
-                candidate = (folder / file).resolve()
-                if file and candidate.is_file() and str(candidate) not in found:
-                    found.append(str(candidate))
-                    pending.append(candidate)
-    return found
+def source_files(part: PartModel) -> dict[str, tuple[int, int]]:
+    """The part's MJCF and every file it includes, with their (size, mtime_ns) when they were read."""
+    return {path: (size, mtime_ns) for path, size, mtime_ns in part.source.files}
 
 
 def part_files(part: PartModel) -> list[str]:
-    """Every file a compile of ``part`` reads: its MJCF, included files, and asset files.
+    """Every file a compile of ``part`` reads: its MJCF, the files it includes, and asset files.
 
     Asset paths are already absolute in the part's prepared spec (see assembler.mjcf.source).
     """
     spec = part.prepared
-    files = [str(part.source.path), *included_files(part.source.path)]
+    files = [str(part.source.path), *source_files(part)]
     for group in (spec.meshes, spec.hfields, spec.skins):
         files += [element.file for element in group if element.file]
     for texture in spec.textures:

@@ -57,6 +57,7 @@ def _part(part: PartModel) -> dict[str, Any]:
     return {
         "classes": [f"{cls.__module__}.{cls.__qualname__}" for cls in type(part).__mro__],
         "spec": part.spec.model_dump(mode="json"),
+        "source": str(part.source.path),  # package:// resolves per environment
         "idn": repr(part.idn),
         "joints": {
             name: {attribute: value.value for attribute, value in sorted(values.items())}

@@ -11,6 +11,7 @@ a nested class or an ancestor's ``childclass`` - exactly as MuJoCo will compile 
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from collections.abc import Mapping
 
 import mujoco
 
@@ -36,12 +37,15 @@ def _main_joint_default(root: ET.Element) -> ET.Element:
     return joint
 
 
-def authored_attributes(root: ET.Element, spec: mujoco.MjSpec) -> list[dict[str, str]]:
+def authored_attributes(
+    root: ET.Element, spec: mujoco.MjSpec, included: Mapping[str, bytes] | None = None
+) -> list[dict[str, str]]:
     """For each joint of ``spec`` (in MjSpec order), the attributes the file sets and how.
 
     How is one of ``"literal"`` (on the joint element), ``"class '<name>'"`` (through a default
     class, childclass or nesting) or ``"main default"`` (the file's class-less ``<default>``).
-    ``root`` is the file's parsed XML; it is not modified.
+    ``root`` is the file's parsed XML; it is not modified. ``included`` maps each ``<include file>``
+    value to that file's bytes: the probe is parsed from memory, where MuJoCo cannot open files.
     """
     probe_root = ET.fromstring(ET.tostring(root))
     main_joint = _main_joint_default(probe_root)
@@ -49,7 +53,8 @@ def authored_attributes(root: ET.Element, spec: mujoco.MjSpec) -> list[dict[str,
     for attribute in SENSED_ATTRIBUTES:
         if attribute not in in_main:
             main_joint.set(attribute, repr(SENTINEL))
-    probe = mujoco.MjSpec.from_string(ET.tostring(probe_root, encoding="unicode"))
+    probe_xml = ET.tostring(probe_root, encoding="unicode")
+    probe = mujoco.MjSpec.from_string(probe_xml, include=dict(included or {}))
 
     literal = {
         element.get("name"): element.attrib

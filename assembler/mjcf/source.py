@@ -42,6 +42,12 @@ class MjcfSource:
     pristine: mujoco.MjSpec
     globals_xml: str
     authored: tuple[dict[str, str], ...]
+    files: tuple[tuple[str, int, int], ...] = ()
+    """The file and every file it includes, as (path, size, mtime_ns) when they were read."""
+
+    def is_current(self) -> bool:
+        """True while none of the files read to make this source has changed on disk."""
+        return all(_stat(path) == (size, mtime_ns) for path, size, mtime_ns in self.files)
 
     def new_spec(self) -> mujoco.MjSpec:
         """A fresh, independent copy of the file's spec to attach or edit."""
@@ -122,11 +128,44 @@ def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjS
         raise MjcfError(f"{shown}: MuJoCo cannot read it: {' '.join(str(error).split())}{hint}") from None
 
 
+def _stat(path: str) -> tuple[int, int] | None:
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return None
+    return stat.st_size, stat.st_mtime_ns
+
+
+def _included_texts(path: Path, read: Sequence[Path]) -> dict[str, bytes]:
+    """Each ``<include file>`` value of the file and its includes, mapped to the included bytes
+    (``read``: the files :func:`check_mjcf` found and confined; MuJoCo resolves includes against
+    the main file's folder)."""
+    confined = {str(file) for file in read}
+    texts: dict[str, bytes] = {}
+    for file in read:
+        if file.suffix.lower() != ".xml":
+            continue
+        for element in ET.parse(file).getroot().iter("include"):
+            name = element.get("file") or ""
+            target = str((path.parent / name).resolve())
+            if name and target in confined:
+                texts[name] = Path(target).read_bytes()
+    return texts
+
+
 @functools.lru_cache(maxsize=64)
 def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozenset[Path]) -> MjcfSource:
     shown = display_path(path)
-    check_mjcf(path, homes)  # size, no DTD, includes confined: before any parser expands anything
-    root, spec = _parse(path, _FIXES.validate_json(fixes_json))
+    read = check_mjcf(path, homes)  # size, no DTD, includes confined: before any parser expands anything
+    # Stat before parsing: a file edited while we read it then shows a newer stat than recorded.
+    files = tuple((str(file), *stat) for file in read if (stat := _stat(str(file))) is not None)
+    fixes = _FIXES.validate_json(fixes_json)
+    if fixes and len(read) > 1:
+        raise MjcfError(
+            f"{shown}: mjcf_fixes cannot be used on a file that includes other files: the repaired text "
+            "is parsed from memory, where MuJoCo would look for the included files in the working directory"
+        )
+    root, spec = _parse(path, fixes)
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
@@ -137,7 +176,8 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
         path=path,
         pristine=spec,
         globals_xml=_globals_xml(root),
-        authored=tuple(authored_attributes(root, spec)),
+        authored=tuple(authored_attributes(root, spec, _included_texts(path, read))),
+        files=files,
     )
 
 
@@ -148,4 +188,9 @@ def load_mjcf(reference: str, fixes: Sequence[MjcfFix] = ()) -> MjcfSource:
     stat = path.stat()
     # Its assets may lie below the folders that admitted it (a spec's folder, a package) or its own.
     homes = frozenset({path.parent, *homes_of(path), *allowed_folders()})
-    return _load(path, stat.st_mtime_ns, stat.st_size, _FIXES.dump_json(list(fixes)).decode(), homes)
+    arguments = (path, stat.st_mtime_ns, stat.st_size, _FIXES.dump_json(list(fixes)).decode(), homes)
+    source = _load(*arguments)
+    if not source.is_current():  # an included file changed: the remembered parse is stale
+        _load.cache_clear()
+        source = _load(*arguments)
+    return source

@@ -77,10 +77,12 @@ def _files_named(data: bytes, shown: str) -> tuple[list[tuple[str, str]], list[s
     return named, folders
 
 
-def check_mjcf(path: Path, homes: Collection[Path]) -> None:
+def check_mjcf(path: Path, homes: Collection[Path]) -> list[Path]:
     """Refuse ``path`` (an MJCF file) if it or a file it includes is too large, declares a DTD, or
-    includes a file outside ``homes`` and the trusted folders."""
+    includes a file outside ``homes`` and the trusted folders. Return every existing file it names
+    through ``<include>``, ``<model>`` or ``<flexcomp>`` (resolved), after ``path`` itself."""
     main_folder = path.parent
+    named: list[Path] = [path]
     pending: list[tuple[Path, int]] = [(path, 0)]
     seen: set[Path] = set()
     while pending:
@@ -100,5 +102,8 @@ def check_mjcf(path: Path, homes: Collection[Path]) -> None:
             bases = (main_folder, current.parent, *(main_folder / folder for folder in folders))
             for folder in dict.fromkeys(bases):
                 included = confine(folder / file, homes, f"{shown}: <{element}> file ", MjcfError)
+                if included.is_file() and included not in named:
+                    named.append(included)
                 if element != "flexcomp" and included.is_file():  # XML: check what it includes
                     pending.append((included, depth + 1))
+    return named
