@@ -39,13 +39,15 @@ def registered_document(name: str) -> LocatedDocument | None:
     return None
 
 
-def class_from_spec(loaded: LoadedSpec) -> type[PartModel]:
-    """Create (and so register) the class a spec describes."""
+def class_from_spec(loaded: LoadedSpec, register: bool = True) -> type[PartModel]:
+    """Create the class a spec describes; it registers itself unless ``register`` is False (e.g. the
+    two versions of one spec that ``assembler diff`` compares)."""
     spec = loaded.spec
     parent = (
         MORPHOLOGY_CLASSES[spec.morphology] if isinstance(spec, RobotSpec) else KIND_CLASSES[kind_of(loaded)]
     )
     namespace = {
+        "abstract": not register,  # the registry's metaclass skips abstract classes
         "spec": spec,
         "loaded": loaded,
         "__doc__": spec.description or f"{kind_of(loaded).title()} '{spec.name}' from {loaded.source}.",

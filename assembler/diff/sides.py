@@ -14,13 +14,13 @@ from pathlib import Path
 import mujoco
 
 from assembler.assembly import equip
-from assembler.catalog import TABLES, kind_of, registered_document
+from assembler.catalog import TABLES, class_from_spec, registered_document
 from assembler.diff.revision import load_at_revision, split_revision
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
-from assembler.loader import SPEC_SUFFIXES, LoadedSpec, load_paths
-from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, PartModel, RobotModel
+from assembler.loader import SPEC_SUFFIXES, load_paths
+from assembler.models import PartModel, RobotModel
 from assembler.paths import display_path
-from assembler.schema import PartSpec, RobotSpec
+from assembler.schema import PartSpec
 
 DIFF_IDN = 0
 """Both sides are built as instance 0, so their element names match."""
@@ -47,22 +47,6 @@ class Side:
         return part.get_model()
 
 
-def unregistered_class(loaded: LoadedSpec) -> type[PartModel]:
-    """The class a spec describes, as :func:`assembler.catalog.class_from_spec` makes it, unregistered."""
-    spec = loaded.spec
-    parent = (
-        MORPHOLOGY_CLASSES[spec.morphology] if isinstance(spec, RobotSpec) else KIND_CLASSES[kind_of(loaded)]
-    )
-    namespace = {
-        "abstract": True,  # the registry's metaclass skips it
-        "spec": spec,
-        "loaded": loaded,
-        "__doc__": spec.description,
-        "__module__": "assembler.specs",
-    }
-    return type(spec.name, (parent,), namespace)
-
-
 def _registered(name: str) -> type[PartModel]:
     for table in TABLES.values():
         if name in table:
@@ -78,11 +62,11 @@ def load_side(reference: str) -> Side:
     """A side from a spec file, ``file@revision`` or a registered robot, base or gripper name."""
     revision = split_revision(reference)
     if revision is not None:
-        return Side(reference, unregistered_class(load_at_revision(*revision)))
+        return Side(reference, class_from_spec(load_at_revision(*revision), register=False))
     path = Path(reference)
     if path.is_file():
         (loaded,) = load_paths([path], registered_document)
-        return Side(reference, unregistered_class(loaded))
+        return Side(reference, class_from_spec(loaded, register=False))
     if reference.endswith(SPEC_SUFFIXES) or path.is_dir():
         what = "a folder; give one spec file" if path.is_dir() else "no such file"
         raise SpecError(f"{display_path(path)}: {what}")
