@@ -204,6 +204,9 @@ def apply_overrides(
         except _Miss as miss:
             problems.append(override.problem(str(miss)))
             continue
+        except SpecError as error:  # e.g. an mjcf path outside the allowed folders
+            problems += [override.problem(p.message) for p in error.problems]
+            continue
         # The file's positions no longer describe these values; errors name the override instead.
         for path in [p for p in marks if p[: len(override.path)] == override.path]:
             del marks[path]

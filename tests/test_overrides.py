@@ -174,3 +174,13 @@ def test_inspect_shows_the_overrides_and_the_values_they_give(capsys: pytest.Cap
     assert "overrides: joint_defaults.damping=0.2" in out
     row = next(line for line in out.splitlines() if line.startswith("robot0_joint1 "))
     assert "0.2  rule 0.2" in row
+
+
+def test_an_mjcf_override_outside_the_allowed_folders_names_the_override(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    assert main(["build", "Sparrow7", "--set", "mjcf=/etc/passwd", "-o", str(tmp_path / "x.xml")]) == 1
+    assert capsys.readouterr().err.startswith(
+        "--set mjcf: /etc/passwd is outside the folders a spec may read"
+    )
+    assert not (tmp_path / "x.xml").exists()
