@@ -191,12 +191,17 @@ def test_spec_at_a_git_revision_reads_its_file_parent_at_that_revision(
     assert "extends" not in out  # the child's own extends: line did not change
 
 
-def test_unknown_revision_is_one_line(
-    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path
-) -> None:
+@pytest.fixture
+def spec_in_repository(write: Write, tmp_path: Path) -> Path:
+    """The two-link spec in a git repository with no commits."""
     write("robots/twolink.xml", TWO_LINK_MJCF)
     spec = write("robots/twolink.yaml", TWO_LINK_SPEC)
     git(tmp_path, "init", "-q")
+    return spec
+
+
+def test_unknown_revision_is_one_line(capsys: pytest.CaptureFixture[str], spec_in_repository: Path) -> None:
+    spec = spec_in_repository
     code, out, err = run(capsys, "diff", f"{spec}@nosuchrev", str(spec))
     assert (code, out) == (1, "")
     assert err.startswith(f"{spec}@nosuchrev: cannot read it from git: ")
@@ -204,11 +209,9 @@ def test_unknown_revision_is_one_line(
 
 
 def test_a_revision_is_never_read_as_a_git_option(
-    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path
+    capsys: pytest.CaptureFixture[str], spec_in_repository: Path, tmp_path: Path
 ) -> None:
-    write("robots/twolink.xml", TWO_LINK_MJCF)
-    spec = write("robots/twolink.yaml", TWO_LINK_SPEC)
-    git(tmp_path, "init", "-q")
+    spec = spec_in_repository
     code, _, err = run(capsys, "diff", f"{spec}@--output={tmp_path / 'x'}", str(spec))
     assert code == 1 and "is not a revision; name a commit, branch or tag" in err
     assert not list(tmp_path.glob("x*"))
