@@ -71,6 +71,12 @@ def test_two_mobile_robots_share_a_scene_without_name_collisions(parts: Path, wr
     data = _forward(model)
     assert data.body("robot1_base").xpos[1] == pytest.approx(-0.6)
     np.testing.assert_allclose(data.qpos[model.joint("mobilebase1_joint_torso_height").qposadr[0]], 0.2)
+    # Each robot's controls stay together: its arm, then its base (robosuite's order), robot by robot.
+    prefixes = [model.actuator(i).name.split("_")[0] for i in range(model.nu)]
+    assert prefixes == sorted(prefixes, key=lambda p: p[-1]) and prefixes.index(
+        "mobilebase0"
+    ) < prefixes.index("robot1")
+    assert prefixes.index("robot0") < prefixes.index("mobilebase0")
 
 
 def test_legged_base_moves_its_free_joint_to_the_robot_root(parts: Path) -> None:

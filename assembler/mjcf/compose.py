@@ -96,8 +96,9 @@ def attach_robot_on_support(
             remove_free_joints(base)
             outer.add_freejoint()
     base.worldbody.first_body().pos = offset  # replaces the base root's own position
+    earlier = len(assembly.actuators)  # a scene's assembly already holds other robots' actuators
     attach(assembly, base, outer.add_frame(), base_prefix)
-    base_actuators = [actuator.name for actuator in assembly.actuators]
+    base_actuators = [actuator.name for actuator in assembly.actuators[earlier:]]
     support = find_body(assembly, base_prefix + support_body, "base support body")
 
     move_world_elements(robot, assembly, robot_prefix)
