@@ -5,14 +5,16 @@
 >>> model = robot.get_model()
 """
 
-from assembler.assembly import assemble
+from assembler.assembly import assemble, create_base, create_gripper, create_robot
 from assembler.catalog import (
     add_spec_folders,
     class_from_spec,
     load_shipped_specs,
     register_spec_string,
     register_specs,
+    with_overrides,
 )
+from assembler.documents import LoadedSpec, Override, parse_overrides
 from assembler.errors import (
     AssemblerError,
     JointAttributeError,
@@ -22,7 +24,7 @@ from assembler.errors import (
     SpecError,
 )
 from assembler.experiment import Experiment, load_experiment
-from assembler.loader import LoadedSpec, load_paths, load_string
+from assembler.loader import load_paths, load_string
 from assembler.models import (
     GripperModel,
     HumanoidModel,
@@ -32,15 +34,11 @@ from assembler.models import (
     RobotBaseModel,
     RobotModel,
 )
-from assembler.overrides import Override, parse_overrides, with_overrides
 from assembler.registry import (
     REGISTERED_BASES,
     REGISTERED_GRIPPERS,
     REGISTERED_ROBOTS,
     RobotModelMeta,
-    create_base,
-    create_gripper,
-    create_robot,
     register_base,
     register_gripper,
     register_robot,
@@ -49,8 +47,7 @@ from assembler.registry import (
 from assembler.scene import Scene, build_scene, load_scene
 from assembler.schema import BaseSpec, ExperimentSpec, GripperSpec, RobotSpec, SceneSpec
 from assembler.variants import VariantPlan, write_variants
-
-__version__ = "0.1.0"
+from assembler.version import __version__
 
 __all__ = [
     "REGISTERED_BASES",

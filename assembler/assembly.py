@@ -1,16 +1,45 @@
-"""``assemble``: a robot with its base and grippers, by name, as robosuite's ``Robot.load_model`` does."""
+"""Making instances: a robot, base or gripper by registered name, and a robot with its base and
+grippers as robosuite's ``Robot.load_model`` assembles it."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 
-from assembler.errors import AssemblerError
-from assembler.models import ManipulatorModel, RobotModel
-from assembler.overrides import Overrides
-from assembler.registry import create_base, create_gripper, create_robot
+from assembler.catalog import with_overrides
+from assembler.documents import Overrides
+from assembler.errors import AssemblerError, RegistryError
+from assembler.fieldpath import FieldPath
+from assembler.models import (
+    REGISTERED_BASES,
+    REGISTERED_GRIPPERS,
+    REGISTERED_ROBOTS,
+    GripperModel,
+    ManipulatorModel,
+    RobotBaseModel,
+    RobotModel,
+)
 
 DEFAULT = "default"
 """Use the robot spec's default base or gripper."""
+
+
+def create_robot(robot_name: str, *args: object, overrides: Overrides = None, **kwargs: object) -> RobotModel:
+    """An instance of the registered robot ``robot_name``, e.g. ``create_robot("Sparrow7", idn=1)``.
+
+    ``overrides`` (``{"joint_defaults.damping": 0.2}`` or ``["init_qpos[3]=-2.0"]``) change spec
+    fields for this instance only; the registered class is left as it is."""
+    cls = with_overrides(REGISTERED_ROBOTS.lookup(robot_name), overrides)
+    return cls(*args, **kwargs)  # type: ignore[arg-type]
+
+
+def create_base(base_name: str, idn: int | str = 0) -> RobotBaseModel:
+    """An instance of the registered base ``base_name``."""
+    return REGISTERED_BASES.lookup(base_name)(idn=idn)
+
+
+def create_gripper(gripper_name: str, idn: int | str = 0) -> GripperModel:
+    """An instance of the registered gripper ``gripper_name``; robots pass ``idn="{robot_idn}_{arm}"``."""
+    return REGISTERED_GRIPPERS.lookup(gripper_name)(idn=idn)
 
 
 def assemble(
@@ -23,9 +52,14 @@ def assemble(
     """Create robot ``robot`` with a base (its default unless given; None for none) and a gripper per
     arm (its defaults, replaced per arm by ``grippers``; None for none). Grippers get idn
     ``"{idn}_{arm}"``, so their prefix is e.g. ``gripper0_right_``, as in robosuite. ``overrides``
-    change the robot's spec fields for this assembly only (see :func:`assembler.create_robot`)."""
+    change the robot's spec fields for this assembly only (see :func:`create_robot`)."""
     model = create_robot(robot, idn=idn, overrides=overrides)
     return equip(model, base, grippers)
+
+
+def _from_spec_default(model: RobotModel, path: FieldPath, error: RegistryError) -> RegistryError:
+    """A registry miss for a name the robot's spec gave by default, located at that field."""
+    return RegistryError([model.spec_problem(path, p.message) for p in error.problems])
 
 
 def equip(
@@ -35,17 +69,29 @@ def equip(
     robot, idn = type(model).__name__, model.idn
     base_name = model.default_base if base == DEFAULT else base
     if base_name is not None:
-        model.add_base(create_base(base_name, idn=idn))
+        try:
+            model.add_base(create_base(base_name, idn=idn))
+        except RegistryError as error:
+            if base != DEFAULT:
+                raise
+            raise _from_spec_default(model, FieldPath(("default_base",)), error) from None
     if not isinstance(model, ManipulatorModel):
         if grippers:
             raise AssemblerError(f"{robot} has no arms to put grippers on")
         return model
     chosen: dict[str, str | None] = {arm: model.spec.default_grippers.get(arm) for arm in model.arms}  # type: ignore[call-overload]
-    for arm, gripper in (grippers or {}).items():
+    given = dict(grippers or {})
+    for arm in given:
         if arm not in chosen:
             raise AssemblerError(f"{robot} has no {arm} arm; its arms: {', '.join(model.arms)}")
-        chosen[arm] = gripper
+    chosen.update(given)
     for arm, gripper in chosen.items():
-        if gripper is not None:
+        if gripper is None:
+            continue
+        try:
             model.add_gripper(create_gripper(gripper, idn=f"{idn}_{arm}"), arm)
+        except RegistryError as error:
+            if arm in given:
+                raise
+            raise _from_spec_default(model, FieldPath(("default_grippers", arm)), error) from None
     return model

@@ -1,101 +1,134 @@
-"""Specs -> registered classes: the shipped specs at import, user folders with one call.
+"""Specs -> classes: the shipped specs at import, user folders with one call, overridden variants.
 
-Each validated spec becomes a real class, ``type(spec.name, (MorphologyClass,), {...})``, and the
-registry's metaclass registers it on creation, exactly like a hand-written subclass.
+Each validated spec becomes a real class, ``type(spec.name, (TypeClass,), {...})``, and the
+registry's metaclass registers it on creation, exactly like a hand-written subclass. A batch of
+specs registers all or nothing, across robots, bases and grippers.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import contextlib
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
-from assembler.errors import Problem, RegistryError
-from assembler.loader import LoadedSpec, load_paths, load_string
-from assembler.models import KIND_CLASSES, MORPHOLOGY_CLASSES, PartModel
+from assembler.documents import (
+    SPEC_SUFFIXES,
+    LoadedSpec,
+    LocatedDocument,
+    Override,
+    Overrides,
+    blame,
+    overridden_spec,
+    parse_overrides,
+)
+from assembler.documents import apply_overrides as apply_document_overrides
+from assembler.errors import AssemblerError, Problem, RegistryError
+from assembler.fieldpath import FieldPath
+from assembler.loader import load_paths, load_string
+from assembler.models import (
+    BASE_TYPE_CLASSES,
+    MORPHOLOGY_CLASSES,
+    REGISTRIES,
+    GripperModel,
+    PartModel,
+    source_of,
+)
 from assembler.paths import shipped_specs_dir
-from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS, source_of
-from assembler.schema import RobotSpec
-from assembler.yaml_source import LocatedDocument
+from assembler.schema import BaseSpec, PartSpec, RobotSpec
 
-TABLES: dict[str, dict[str, Any]] = {
-    "robot": REGISTERED_ROBOTS,
-    "base": REGISTERED_BASES,
-    "gripper": REGISTERED_GRIPPERS,
-}
+NAME = FieldPath(("name",))
+P = TypeVar("P", bound=PartModel)
 
 
-def kind_of(loaded: LoadedSpec) -> str:
+def kind_of(spec: PartSpec) -> str:
     """robot, base or gripper."""
-    return str(getattr(loaded.spec, "kind", "robot"))
+    return str(getattr(spec, "kind", "robot"))
 
 
-def registered_document(name: str) -> LocatedDocument | None:
-    """The merged spec document of a registered spec-made part, for ``extends: <name>``."""
-    for table in TABLES.values():
-        loaded = getattr(table.get(name), "loaded", None)
-        if loaded is not None:
-            return loaded.document  # type: ignore[no-any-return]
-    return None
+class RegistryParents:
+    """``extends: <name>`` looks in the registry: the merged documents of spec-made classes."""
+
+    def document(self, name: str) -> LocatedDocument | None:
+        for table in REGISTRIES.values():
+            loaded = getattr(table.get(name), "loaded", None)
+            if loaded is not None:
+                return loaded.document  # type: ignore[no-any-return]
+        return None
+
+    def names(self, kind: str) -> list[str]:
+        return sorted(REGISTRIES[kind]) if kind in REGISTRIES else []
 
 
-def class_from_spec(loaded: LoadedSpec, register: bool = True) -> type[PartModel]:
+PARENTS = RegistryParents()
+
+
+def parent_class(spec: PartSpec) -> type[PartModel]:
+    """The class a spec's class derives from: its morphology, base type or the gripper class."""
+    if isinstance(spec, RobotSpec):
+        return MORPHOLOGY_CLASSES[spec.morphology]
+    if isinstance(spec, BaseSpec):
+        return BASE_TYPE_CLASSES[spec.type]
+    return GripperModel
+
+
+def class_from_spec(loaded: LoadedSpec[Any], register: bool = True) -> type[PartModel]:
     """Create the class a spec describes; it registers itself unless ``register`` is False (e.g. the
     two versions of one spec that ``assembler diff`` compares)."""
     spec = loaded.spec
-    parent = (
-        MORPHOLOGY_CLASSES[spec.morphology] if isinstance(spec, RobotSpec) else KIND_CLASSES[kind_of(loaded)]
-    )
     namespace = {
-        "abstract": not register,  # the registry's metaclass skips abstract classes
+        "in_registry": register,
         "spec": spec,
         "loaded": loaded,
-        "__doc__": spec.description or f"{kind_of(loaded).title()} '{spec.name}' from {loaded.source}.",
+        "__doc__": spec.description or f"{kind_of(spec).title()} '{spec.name}' from {loaded.source}.",
         "__module__": "assembler.specs",
     }
-    return type(spec.name, (parent,), namespace)
+    return type(spec.name, (parent_class(spec),), namespace)
 
 
-def _check_names(batch: list[LoadedSpec]) -> None:
+def _check_names(batch: list[LoadedSpec[PartSpec]]) -> None:
+    """No name twice in the batch, and none already registered by another spec of its family."""
     problems: list[Problem] = []
-    first: dict[str, LoadedSpec] = {}
+    first: dict[tuple[str, str], LoadedSpec[PartSpec]] = {}
     for loaded in batch:
-        name = loaded.spec.name
-        where = loaded.location(("name",))
-        if name in first and first[name].source != loaded.source:
+        name, kind = loaded.spec.name, kind_of(loaded.spec)
+        earlier = first.setdefault((kind, name), loaded)
+        if earlier is not loaded and earlier.source != loaded.source:
             problems.append(
-                Problem(
-                    f"robot '{name}' is also defined by {first[name].source}; rename one",
-                    where,
-                    "name",
-                )
+                loaded.problem(NAME, f"{kind} '{name}' is also defined by {earlier.source}; rename one")
             )
-        first.setdefault(name, loaded)
-        existing = REGISTERED_ROBOTS.get(name)
+        existing = REGISTRIES[kind].get(name)
         if existing is not None and source_of(existing) != loaded.source:
-            problems.append(
-                Problem(
-                    f"robot '{name}' is already registered by {source_of(existing)}; rename one",
-                    where,
-                    "name",
-                )
-            )
+            message = f"{kind} '{name}' is already registered by {source_of(existing)}; rename one"
+            problems.append(loaded.problem(NAME, message))
     if problems:
         raise RegistryError(problems)
 
 
+@contextlib.contextmanager
+def _all_or_nothing() -> Iterator[None]:
+    with contextlib.ExitStack() as stack:
+        for table in REGISTRIES.values():
+            stack.enter_context(table.transaction())
+        yield
+
+
+def register_loaded(batch: list[LoadedSpec[PartSpec]]) -> list[type[PartModel]]:
+    """Register a batch of validated specs: all of them, or (on any problem) none."""
+    _check_names(batch)
+    with _all_or_nothing():
+        return [class_from_spec(loaded) for loaded in batch]
+
+
 def register_specs(*paths: str | Path) -> list[type[PartModel]]:
     """Validate and register every spec in the given files and folders (all or nothing)."""
-    batch = load_paths(paths, registered_document)
-    _check_names(batch)
-    return [class_from_spec(loaded) for loaded in batch]
+    return register_loaded(load_paths(paths, PARENTS))
 
 
 def register_spec_string(text: str) -> type[PartModel]:
     """Validate and register one spec written as YAML text."""
-    loaded = load_string(text, registered_document)
-    _check_names([loaded])
-    return class_from_spec(loaded)
+    (cls,) = register_loaded([load_string(text, PARENTS)])
+    return cls
 
 
 def load_shipped_specs() -> list[type[PartModel]]:
@@ -108,3 +141,68 @@ def add_spec_folders(folders: Iterable[str | Path]) -> list[type[PartModel]]:
     """Register the user's spec folders (the CLI's ``--specs`` flag)."""
     folders = list(folders)
     return register_specs(*folders) if folders else []
+
+
+def classes_named(references: Sequence[str]) -> list[type[PartModel]]:
+    """The parts ``references`` name: spec files and folders (registered together, so they may
+    extend each other), then registered robot, base or gripper names."""
+    paths = [r for r in references if r.endswith(SPEC_SUFFIXES) or Path(r).exists()]
+    classes = register_specs(*paths) if paths else []
+    for name in (r for r in references if r not in paths):
+        for table in REGISTRIES.values():
+            if name in table:
+                classes.append(table[name])
+                break
+        else:
+            classes.append(REGISTRIES["robot"].lookup(name))  # "unknown robot ... Did you mean"
+    return classes
+
+
+# ----- overrides: a variant of a class, never registered ---------------------------------------
+
+
+def loaded_of(cls: type[PartModel]) -> LoadedSpec[Any]:
+    """The spec document of a class (a class written in Python: its spec as a document)."""
+    if cls.loaded is not None:
+        return cls.loaded
+    data = cls.spec.model_dump(mode="json")
+    return LoadedSpec(spec=cls.spec, document=LocatedDocument(data, f"<class {cls.__qualname__}>"))
+
+
+def check_override_paths(cls: type[PartModel], overrides: list[Override]) -> None:
+    """Raise :class:`SpecError` if a path does not exist in ``cls``'s spec; values are not checked."""
+    loaded = loaded_of(cls)
+    apply_document_overrides(loaded.document, type(loaded.spec), overrides)
+
+
+def applied_overrides(cls: type) -> tuple[Override, ...]:
+    """The overrides a class was made with (none for a registered class)."""
+    return tuple(getattr(cls, "applied_overrides", ()))
+
+
+def with_overrides(cls: type[P], overrides: Overrides, label: str = "override ") -> type[P]:
+    """``cls`` itself when there is nothing to override, else an unregistered subclass of the
+    same name whose ``spec`` has the overrides applied."""
+    items = parse_overrides(overrides, label)
+    if not items:
+        return cls
+    loaded = overridden_spec(loaded_of(cls), items)
+
+    def prepared(self: P) -> Any:
+        # Checks against the MJCF (joint counts, names, files) name the override, not the spec.
+        try:
+            return cls.prepared(self)
+        except AssemblerError as error:
+            raise type(error)([blame(p, items, note=False) for p in error.problems]) from None
+
+    namespace = {
+        "prepared": prepared,
+        "in_registry": False,  # the reviewed spec stays registered
+        "spec": loaded.spec,
+        "loaded": loaded,
+        "applied_overrides": (*applied_overrides(cls), *items),
+        "__doc__": cls.__doc__,
+        "__module__": cls.__module__,
+        "__qualname__": cls.__qualname__,
+    }
+    return type(cls.__name__, (cls,), namespace)

@@ -11,6 +11,8 @@ import difflib
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
+from assembler.fieldpath import FieldPath
+
 
 @dataclass(frozen=True)
 class Location:
@@ -34,12 +36,13 @@ class Problem:
 
     message: str
     location: Location | None = None
-    path: str | None = None
+    path: FieldPath | str | None = None
+    """The field the problem is about (a spec field path), or a label such as ``--set init_qpos[7]``."""
 
     def __str__(self) -> str:
         parts = [str(self.location)] if self.location else []
         if self.path:
-            parts.append(self.path)
+            parts.append(str(self.path))
         parts.append(self.message)
         return ": ".join(parts)
 

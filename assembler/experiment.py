@@ -12,18 +12,14 @@ from pathlib import Path
 
 import mujoco
 import numpy as np
-from pydantic import ValidationError
 
-from assembler.assembly import assemble
-from assembler.errors import AssemblerError, Problem, SpecError
-from assembler.loader import problems_from_validation
+from assembler.documents import LoadedSpec, Override, parse_path, read_validated
+from assembler.errors import Problem
+from assembler.fieldpath import FieldPath
 from assembler.mjcf.emit import to_xml
 from assembler.models import RobotModel
-from assembler.overrides import Override, parse_path
-from assembler.paths import display_path
-from assembler.scene import Scene, place_robots, robot_reference
-from assembler.schema import ExperimentRobot, ExperimentSpec
-from assembler.yaml_source import LocatedDocument, parse_yaml, read_yaml_text
+from assembler.scene import Scene, assemble_entries, place_robots
+from assembler.schema import ExperimentRobot, ExperimentSpec, SceneRobot
 
 
 @dataclass
@@ -49,69 +45,41 @@ class Experiment:
         return to_xml(self.mjspec)
 
 
-def read_experiment(path: str | Path) -> tuple[ExperimentSpec, LocatedDocument]:
+def read_experiment(path: str | Path) -> LoadedSpec[ExperimentSpec]:
     """Read and validate an experiment file, with file:line:col on every problem."""
-    file = Path(path)
-    document = parse_yaml(read_yaml_text(file, display_path(file)), display_path(file))
-    try:
-        return ExperimentSpec.model_validate(document.data), document
-    except ValidationError as error:
-        raise SpecError(problems_from_validation(error, document, ExperimentSpec)) from None
+    return read_validated(path, ExperimentSpec)
 
 
-def _overrides(entry: ExperimentRobot, index: int, document: LocatedDocument) -> list[Override]:
-    label = f"robots[{index}].overrides."
-    found: list[Override] = []
-    for key, value in entry.overrides.items():
-        where = document.location(("robots", index, "overrides", key))
-        found.append(Override(parse_path(key, label, where), value, label, where))
-    return found
-
-
-def _assemble(entry: ExperimentRobot, index: int, document: LocatedDocument, folder: Path) -> RobotModel:
-    """One robot of the experiment; problems without a position of their own get the entry's."""
-    try:
-        return assemble(
-            robot_reference(entry.robot, folder),
-            idn=index if entry.idn is None else entry.idn,
-            base=entry.base,
-            grippers=dict(entry.grippers.items()),
-            overrides=_overrides(entry, index, document),
-        )
-    except AssemblerError as error:
-        where = document.location(("robots", index))
-        raise type(error)(
-            [
-                p if p.location else Problem(p.message, where, p.path or f"robots[{index}]")
-                for p in error.problems
-            ]
-        ) from None
-
-
-def build_experiment(spec: ExperimentSpec, document: LocatedDocument, folder: Path) -> Experiment:
-    """Assemble every robot of ``spec`` (all problems at once); place them when there are several."""
-    robots: list[RobotModel] = []
+def _idns(loaded: LoadedSpec[ExperimentSpec]) -> tuple[list[int], list[Problem]]:
+    """Each robot's idn (its index unless given); one idn used twice is a problem at the second."""
+    idns: list[int] = []
     problems: list[Problem] = []
-    seen: dict[int, int] = {}  # idn -> first robot index
-    for index, entry in enumerate(spec.robots):
+    seen: dict[int, int] = {}
+    for index, entry in enumerate(loaded.spec.robots):
         idn = index if entry.idn is None else entry.idn
         if idn in seen:
-            where = document.location(("robots", index, "idn"))
-            problems.append(
-                Problem(
-                    f"idn {idn} is already used by robots[{seen[idn]}]; give each robot its own",
-                    where,
-                    f"robots[{index}].idn",
-                )
-            )
-            continue
-        seen[idn] = index
-        try:
-            robots.append(_assemble(entry, index, document, folder))
-        except AssemblerError as error:
-            problems.extend(error.problems)
-    if problems:
-        raise SpecError(problems)
+            message = f"idn {idn} is already used by robots[{seen[idn]}]; give each robot its own"
+            problems.append(loaded.problem(FieldPath(("robots", index, "idn")), message))
+        seen.setdefault(idn, index)
+        idns.append(idn)
+    return idns, problems
+
+
+def build_experiment(loaded: LoadedSpec[ExperimentSpec]) -> Experiment:
+    """Assemble every robot of an experiment (all problems at once); place them when there are several."""
+    spec, document = loaded.spec, loaded.document
+
+    def overrides(index: int, entry: SceneRobot) -> list[Override]:
+        assert isinstance(entry, ExperimentRobot)
+        label = f"robots[{index}].overrides."
+        found: list[Override] = []
+        for key, value in entry.overrides.items():
+            where = document.field_location(FieldPath(("robots", index, "overrides", key)))
+            found.append(Override(parse_path(key, label, where), value, label, where))
+        return found
+
+    idns, idn_problems = _idns(loaded)
+    robots = assemble_entries(document, spec.robots, idns, overrides, idn_problems)
     if len(robots) > 1:
         return Experiment(spec=spec, robots=robots, scene=place_robots(spec.as_scene(), robots))
     # One robot is built alone, as `assembler build` would, and moved only where the file says.
@@ -125,5 +93,4 @@ def build_experiment(spec: ExperimentSpec, document: LocatedDocument, folder: Pa
 
 def load_experiment(path: str | Path) -> Experiment:
     """Read, validate and assemble an experiment file; robot spec paths are relative to it."""
-    spec, document = read_experiment(path)
-    return build_experiment(spec, document, Path(path).parent)
+    return build_experiment(read_experiment(path))

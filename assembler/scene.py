@@ -2,29 +2,31 @@
 
 Robot i gets idn i, so its parts are prefixed ``robot{i}_``, ``mobilebase{i}_``, ``gripper{i}_right_``
 and never collide. Each robot is placed with ``set_base_xpos`` / ``set_base_ori``. The scene's
-``home`` keyframe combines every robot's, base's and gripper's initial pose.
+``home`` keyframe combines every robot's, base's and grippers' initial pose. Every problem of a
+scene file is reported at once, at the entry that causes it.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import mujoco
 import numpy as np
-from pydantic import ValidationError
 
 from assembler.assembly import assemble
 from assembler.catalog import register_specs
-from assembler.errors import SpecError
-from assembler.loader import SPEC_SUFFIXES, problems_from_validation
+from assembler.documents import SPEC_SUFFIXES, LocatedDocument, Override, read_validated
+from assembler.documents.validation import reading_order
+from assembler.errors import AssemblerError, Problem, SpecError
+from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.models import RobotModel
-from assembler.paths import confine, display_path
-from assembler.schema import SceneSpec
-from assembler.yaml_source import parse_yaml, read_yaml_text
+from assembler.paths import confine
+from assembler.references import placement_reference_problems
+from assembler.schema import SceneRobot, SceneSpec
 
 FLOOR_XML = """<mujoco>
   <asset>
@@ -55,16 +57,6 @@ class Scene:
         return compile_with_home(self.mjspec, home, f"scene '{self.spec.name}'")
 
 
-def load_scene_spec(path: str | Path) -> SceneSpec:
-    """Read and validate a scene file, with file:line:col on every problem."""
-    file = Path(path)
-    document = parse_yaml(read_yaml_text(file, display_path(file)), display_path(file))
-    try:
-        return SceneSpec.model_validate(document.data)
-    except ValidationError as error:
-        raise SpecError(problems_from_validation(error, document, SceneSpec)) from None
-
-
 def robot_reference(reference: str, folder: Path | None = None) -> str:
     """A registered robot name; a robot spec file (relative to ``folder``) is registered first."""
     if reference.endswith(SPEC_SUFFIXES):
@@ -73,6 +65,46 @@ def robot_reference(reference: str, folder: Path | None = None) -> str:
         (cls,) = register_specs(confine(home / reference, [home], "robot spec "))
         return cls.__name__
     return reference
+
+
+EntryOverrides = Callable[[int, SceneRobot], list[Override]]
+"""The overrides of the robot entry at an index (an experiment's; a scene has none)."""
+
+
+def assemble_entries(
+    document: LocatedDocument,
+    entries: Sequence[SceneRobot],
+    idns: Sequence[int],
+    overrides: EntryOverrides | None = None,
+    problems: Sequence[Problem] = (),
+) -> list[RobotModel]:
+    """Assemble each robot entry of a scene or experiment file; every problem at once (with
+    ``problems`` found earlier), each at its entry when it has no position of its own."""
+    found = list(problems)
+    folder = document.folder
+    robots: list[RobotModel] = []
+    for index, (entry, idn) in enumerate(zip(entries, idns, strict=True)):
+        here = FieldPath(("robots", index))
+        unknown = placement_reference_problems(document, [entry], index)
+        if unknown:
+            found += unknown
+            continue
+        try:
+            robots.append(
+                assemble(
+                    robot_reference(entry.robot, folder),
+                    idn=idn,
+                    base=entry.base,
+                    grippers=dict(entry.grippers.items()),
+                    overrides=overrides(index, entry) if overrides is not None else None,
+                )
+            )
+        except AssemblerError as error:
+            where = document.where(here)
+            found += [p if p.location else Problem(p.message, where, p.path or here) for p in error.problems]
+    if found:
+        raise SpecError(sorted(found, key=reading_order))
+    return robots
 
 
 def place_robots(spec: SceneSpec, robots: Sequence[RobotModel]) -> Scene:
@@ -92,16 +124,16 @@ def place_robots(spec: SceneSpec, robots: Sequence[RobotModel]) -> Scene:
     return Scene(spec=spec, robots=list(robots), mjspec=assembly)
 
 
-def build_scene(spec: SceneSpec, folder: Path | None = None) -> Scene:
-    """Assemble and place every robot of ``spec`` into one MuJoCo spec."""
-    robots = [
-        assemble(robot_reference(e.robot, folder), idn=idn, base=e.base, grippers=dict(e.grippers.items()))
-        for idn, e in enumerate(spec.robots)
-    ]
+def build_scene(spec: SceneSpec, document: LocatedDocument | None = None) -> Scene:
+    """Assemble and place every robot of a scene (robot i gets idn i); problems point into
+    ``document`` (the scene file) when there is one."""
+    if document is None:
+        document = LocatedDocument(spec.model_dump(mode="json"), f"<scene {spec.name}>")
+    robots = assemble_entries(document, spec.robots, list(range(len(spec.robots))))
     return place_robots(spec, robots)
 
 
 def load_scene(path: str | Path) -> Scene:
     """Read, validate and assemble a scene file; robot spec paths are relative to it."""
-    file = Path(path)
-    return build_scene(load_scene_spec(file), file.parent)
+    loaded = read_validated(path, SceneSpec)
+    return build_scene(loaded.spec, loaded.document)

@@ -24,12 +24,11 @@ import numpy as np
 import yaml
 
 from assembler.assembly import DEFAULT, assemble
-from assembler.catalog import register_specs
+from assembler.catalog import check_override_paths, register_specs, with_overrides
+from assembler.documents import Override, parse_overrides, parse_path
 from assembler.errors import AssemblerError, Problem
 from assembler.mjcf.emit import write_atomically
-from assembler.overrides import Override, check_paths, parse_overrides, parse_path, with_overrides
 from assembler.registry import robot_class
-from assembler.yaml_source import dotted
 
 MANIFEST = "manifest.jsonl"
 
@@ -55,7 +54,7 @@ class Grid:
             values = None
         if not key or not isinstance(values, list) or not values:
             raise _flag_error("grid", text, "PATH=V1,V2,... (e.g. joint_defaults.damping=0.05,0.1)")
-        return cls(dotted(parse_path(key, "--grid ")), tuple(values))
+        return cls(str(parse_path(key, "--grid ")), tuple(values))
 
 
 @dataclass(frozen=True)
@@ -78,7 +77,7 @@ class Draw:
             raise _flag_error(law, text, expected) from None
         if not key or not np.isfinite([a, b]).all() or (a > b if law == "uniform" else b < 0):
             raise _flag_error(law, text, expected)
-        return cls(dotted(parse_path(key, f"--{law} ")), law, a, b)
+        return cls(str(parse_path(key, f"--{law} ")), law, a, b)
 
     def sample(self, rng: np.random.Generator) -> float:
         """One value, drawn from ``rng``."""
@@ -104,13 +103,34 @@ class VariantPlan:
     """Fields whose values are combined (cartesian product)."""
     draws: tuple[Draw, ...] = ()
     """Fields drawn at random for each variant."""
-    count: int = 1
-    """Random variants per grid point (``--random N``)."""
+    random: int | None = None
+    """Random variants per grid point (``--random N``); None when nothing is drawn."""
     seed: int = 0
     """Seed of the draws; with the variant's index, it alone decides the variant's values."""
     spec_paths: tuple[str, ...] = ()
     """User spec files and folders, registered again in worker processes that do not inherit them
     (specs registered from strings in this process are not seen by spawned workers)."""
+    cache: bool = True
+    """Whether variants may be answered from the compiled-model cache (``--no-cache``: False)."""
+
+    def __post_init__(self) -> None:
+        keys = [g.key for g in self.grids] + [d.key for d in self.draws]
+        twice = sorted({key for key in keys if keys.count(key) > 1})
+        if twice:
+            raise AssemblerError(f"{', '.join(twice)}: varied by two flags; vary each field once")
+        if self.draws and self.random is None:
+            raise AssemblerError("--uniform/--normal draw values for --random N variants; add --random N")
+        if self.random is not None and (self.random < 1 or not self.draws):
+            raise AssemblerError("--random N needs N >= 1 and at least one --uniform or --normal range")
+        if self.seed < 0:
+            raise AssemblerError("--seed must be >= 0 and --jobs >= 1")
+        if not self.grids and not self.draws:
+            raise AssemblerError("nothing to vary: give --grid PATH=V1,V2,... or --random N with ranges")
+
+    @property
+    def count(self) -> int:
+        """Variants per grid point."""
+        return self.random or 1
 
     def variant_overrides(self) -> list[dict[str, Any]]:
         """The overrides of every variant, in index order: grid points, then draws within each."""
@@ -133,7 +153,7 @@ class VariantPlan:
     def check(self) -> None:
         """The fixed overrides are valid and every varied path exists (one error before any work)."""
         cls = with_overrides(robot_class(self.robot), parse_overrides(self.fixed, "--set "))
-        check_paths(cls, self.overrides(self.variant_overrides()[0]))
+        check_override_paths(cls, self.overrides(self.variant_overrides()[0]))
 
 
 @dataclass(frozen=True)
@@ -169,7 +189,7 @@ def build_variant(plan: VariantPlan, index: int, variant: dict[str, Any], folder
     seed = plan.seed if plan.draws else None
     try:
         robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=changes)
-        xml = robot.get_xml()  # compiled first: a variant MuJoCo refuses is never written
+        xml = robot.get_xml(cache=plan.cache)  # compiled first: a variant MuJoCo refuses is never written
     except AssemblerError as error:
         return VariantResult(index, shown, problems=tuple(str(p) for p in error.problems), seed=seed)
     name = f"{plan.robot}_{index:04d}.xml"
@@ -185,6 +205,8 @@ def _build(job: tuple[VariantPlan, int, dict[str, Any], Path]) -> VariantResult:
 def write_variants(plan: VariantPlan, folder: str | Path, jobs: int | None = None) -> list[VariantResult]:
     """Build every variant into ``folder`` on ``jobs`` processes (all cores by default) and write
     ``manifest.jsonl`` for the written ones; the results say which failed and why."""
+    if jobs is not None and jobs < 1:
+        raise AssemblerError("--seed must be >= 0 and --jobs >= 1")
     plan.check()
     target = Path(folder)
     target.mkdir(parents=True, exist_ok=True)

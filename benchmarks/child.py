@@ -56,10 +56,10 @@ def _entry_model_file(robot: Any) -> str | None:
     """The cached model file of ``robot``, if the cache has it (a concurrent edit of the
     assembler's code changes every key: then there is none, and the harness runs again)."""
     from assembler.cache import default_store
-    from assembler.cache.key import robot_key
+    from assembler.cache.key import cache_key
 
     store = default_store()
-    entry = store._read_entry(robot_key(robot) or "")
+    entry = store._read_entry(cache_key(robot.build_inputs()) or "")
     return None if entry is None else str(store.directory / entry.model)
 
 

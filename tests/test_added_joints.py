@@ -11,6 +11,7 @@ import pytest
 
 import assembler
 from assembler.errors import MjcfError
+from assembler.models.provenance import Provenance
 
 BODY_MJCF = """\
 <mujoco model="hull">
@@ -63,7 +64,7 @@ def test_added_joints_replace_the_free_joint_and_are_driven(write: Callable[[str
 
 
 def test_added_joints_show_their_source_in_inspect(write: Callable[[str, str], Path]) -> None:
-    assert _base(write).joint_values["forward"]["frictionloss"].source == "spec added_joints[0]"
+    assert _base(write).joint_values["forward"]["frictionloss"].source == Provenance("added", index=0)
 
 
 def test_an_added_joint_on_a_missing_body_names_the_bodies(write: Callable[[str, str], Path]) -> None:
@@ -71,4 +72,4 @@ def test_an_added_joint_on_a_missing_body_names_the_bodies(write: Callable[[str,
         MjcfError,
         match=r"hull.yaml:7:3: added_joints: added joint 'forward': no body 'chassis'. Bodies: hull, support",
     ):
-        _base(write, body="chassis")
+        _base(write, body="chassis").check()

@@ -113,6 +113,7 @@ def test_inspect_json(capsys: pytest.CaptureFixture[str]) -> None:
     assert table["robot0_joint6"]["armature"] == {
         "value": pytest.approx(5 / 6),
         "source": "rule 5/(i+1)",
+        "origin": "rule",
     }
 
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.errors import AssemblerError, MjcfError, RegistryError
+from assembler.errors import AssemblerError, RegistryError, SpecError
 
 
 def _tree(model: mujoco.MjModel) -> dict[str, str]:
@@ -116,7 +116,10 @@ def test_missing_support_body_is_named(parts: Path, write, monkeypatch: pytest.M
         )
     )
     robot = assembler.assemble("TwoLink", base="NoSupport")
-    with pytest.raises(MjcfError, match=r"base support body: no body named 'mobilebase0_support'. Bodies: "):
+    with pytest.raises(
+        SpecError,
+        match=r"nosupport.yaml:1:1: support_body: no body named 'support' in the MJCF. Bodies: base$",
+    ):
         robot.get_model()
 
 
@@ -162,7 +165,9 @@ def test_missing_end_effector_body_is_named(parts: Path, write) -> None:  # type
     robot = cls(idn=0)
     robot.add_gripper(assembler.create_gripper("TestPinch", idn="0_right"), arm="right")
     with pytest.raises(
-        MjcfError, match=r"end-effector body: no body named 'robot0_tool0'. Bodies: robot0_base, "
+        SpecError,
+        match=r"handless.yaml:3:21: eef_bodies.right: no body named 'tool0' in the MJCF. "
+        r"Bodies: base, link1, link2, right_hand$",
     ):
         robot.get_model()
 
@@ -175,10 +180,11 @@ def test_dangling_important_names_are_refused(parts: Path, write) -> None:  # ty
         )
     )
     with pytest.raises(
-        MjcfError,
-        match=r"bad_pinch.yaml:4:35: important_geoms.left_fingerpad: 'finger1_pad' does not exist in the MJCF",
+        SpecError,
+        match=r"bad_pinch.yaml:4:36: important_geoms.left_fingerpad\[0\]: no geom named 'finger1_pad' in the "
+        r"MJCF. Did you mean 'finger_pad_col'\? Geoms: finger_pad_col, palm_col$",
     ):
-        cls(idn="0_right")
+        cls(idn="0_right").check()
 
 
 def test_unknown_base_and_gripper_names_suggest(parts: Path) -> None:

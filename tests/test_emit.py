@@ -107,7 +107,7 @@ def test_missing_mesh_is_named_before_anything_is_written(write, tmp_path: Path)
         MjcfError,
         match=r"meshy.yaml:2:7: mjcf: .*meshy.xml: asset file not found: .*meshes/tetra.obj$",
     ):
-        cls(idn=0)
+        cls(idn=0).check()
 
 
 def test_a_failed_write_keeps_the_old_file_and_leaves_no_temporary(tmp_path: Path) -> None:

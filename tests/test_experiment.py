@@ -99,13 +99,15 @@ def test_problems_point_at_the_experiment_file(write: Write) -> None:
     with pytest.raises(SpecError) as caught:
         assembler.load_experiment(path)
     lines = str(caught.value).replace(f"{path.parent}/", "").splitlines()
-    assert lines[0].startswith("bad.yaml:4:5: robots[0]: unknown robot 'Sparow7'. Did you mean 'Sparrow7'?")
+    assert lines[0].startswith(
+        "bad.yaml:4:12: robots[0].robot: unknown robot 'Sparow7'. Did you mean 'Sparrow7'?"
+    )
     assert lines[1:] == [
         "bad.yaml:7:7: robots[1].overrides.joint_defaults.dampin: unknown key 'dampin'. "
         "Did you mean 'damping'? Valid keys here: armature, damping, frictionloss",
         "bad.yaml:8:7: robots[1].overrides.init_qpos[9]: index 9 is out of range: "
         "init_qpos has 6 values (indexes 0 to 5)",
-        "bad.yaml:10:5: robots[2].idn: idn 1 is already used by robots[1]; give each robot its own",
+        "bad.yaml:10:10: robots[2].idn: idn 1 is already used by robots[1]; give each robot its own",
     ]
 
 

@@ -9,6 +9,7 @@ import pytest
 
 import assembler
 from assembler.errors import SpecError
+from assembler.models.provenance import Provenance
 from tests.conftest import TWO_LINK_MJCF
 
 Write = Callable[[str, str], Path]
@@ -44,7 +45,7 @@ def test_rules_fill_only_what_the_file_leaves_unset(write: Write) -> None:
 def test_every_value_remembers_its_source(write: Write) -> None:
     robot = _robot(write, "")
     sources = {
-        (joint, attribute): value.source
+        (joint, attribute): str(value.source)
         for joint, values in robot.joint_values.items()
         for attribute, value in values.items()
     }
@@ -59,7 +60,7 @@ def test_main_default_counts_as_set_by_the_file(write: Write) -> None:
     robot = _robot(write, "", mjcf)
     assert robot.joint_values["elbow"]["damping"].value == 3.0  # class beats main
     # shoulder's class chain (wrist <- arm) sets damping 3 too; main's 0.7 is only the fallback
-    assert robot.joint_values["shoulder"]["damping"].source == "mjcf (main default)"
+    assert robot.joint_values["shoulder"]["damping"].source == Provenance("mjcf", how="main default")
 
 
 def test_scalar_list_and_null_rules(write: Write) -> None:
@@ -87,7 +88,7 @@ def test_inverse_index_rule_with_another_scale(write: Write) -> None:
 
 def test_list_rule_of_the_wrong_length_points_at_the_spec(write: Write) -> None:
     with pytest.raises(SpecError, match=r"robot.yaml:4:12: joint_defaults.damping: expected 2 values"):
-        _robot(write, "joint_defaults:\n  damping: [0.1, 0.2, 0.3]\n")
+        _robot(write, "joint_defaults:\n  damping: [0.1, 0.2, 0.3]\n").check()
 
 
 def test_glob_override_with_and_without_force(write: Write) -> None:
@@ -103,19 +104,21 @@ def test_glob_override_with_and_without_force(write: Write) -> None:
     # shoulder's came from the rule: replaced
     assert _compiled(robot, "shoulder", "frictionloss") == pytest.approx(0.05)
     assert _compiled(robot, "elbow", "stiffness") == 2.0
-    assert robot.joint_values["elbow"]["stiffness"].source == "spec joints[1]"
+    assert robot.joint_values["elbow"]["stiffness"].source == Provenance("override", index=1)
 
 
 def test_childclass_reaches_joints_in_descendant_bodies(write: Write) -> None:
     robot = _robot(write, "", WITHOUT_ELBOW_CLASS)
     # elbow sits in link2, below link1's childclass 'wrist' (nested in 'arm'), as MuJoCo resolves
-    assert robot.joint_values["elbow"]["damping"].source == "mjcf (class 'wrist')"
+    assert robot.joint_values["elbow"]["damping"].source == Provenance(
+        "mjcf", how="class", class_name="wrist"
+    )
     assert _compiled(robot, "elbow", "armature") == 2.0
 
 
 def test_override_matching_no_joint_lists_the_joints(write: Write) -> None:
     with pytest.raises(SpecError) as caught:
-        _robot(write, "joints:\n  - match: wrist\n    damping: 1\n")
+        _robot(write, "joints:\n  - match: wrist\n    damping: 1\n").check()
     assert str(caught.value).endswith(
         "r/robot.yaml:4:12: joints[0].match: no joint matches 'wrist'. Joints: shoulder, elbow"
     )

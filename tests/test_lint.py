@@ -188,15 +188,22 @@ def test_armature_the_index_rule_made_tiny(capsys: pytest.CaptureFixture[str], w
     ) == (5, 13)
 
 
-def test_missing_end_effector_body_is_an_error(capsys: pytest.CaptureFixture[str], write: Write) -> None:
-    code, findings = lint_json(capsys, str(probe(write, spec=PROBE_SPEC + "eef_bodies: {right: hand}\n")))
-    assert code == 1
-    assert codes(findings) == [("RA501", "error", "robot0_hand")]
-    assert (
-        findings[0]["why"]
-        == "eef_bodies.right names body robot0_hand, which the assembled model does not have"
+def test_a_missing_end_effector_body_is_a_spec_problem_before_anything_is_linted(
+    capsys: pytest.CaptureFixture[str], write: Write
+) -> None:
+    main_code = main(
+        ["lint", str(probe(write, spec=PROBE_SPEC + "eef_bodies: {right: hand}\n")), "--format", "json"]
     )
-    assert str(findings[0]["file"]).endswith("probe/probe.yaml") and findings[0]["line"] == 4
+    report = json.loads(capsys.readouterr().out)
+    assert main_code == 1 and report["targets"] == []
+    (problem,) = report["problems"]
+    assert str(problem["file"]).endswith("probe/probe.yaml") and (problem["line"], problem["column"]) == (
+        4,
+        21,
+    )
+    assert problem["message"].endswith(
+        "eef_bodies.right: no body named 'hand' in the MJCF. Bodies: base, link1, link2, right_hand"
+    )
 
 
 def test_gripper_without_fingerpads_or_with_a_pad_that_cannot_touch(

@@ -75,7 +75,7 @@ def test_without_repairs_mujoco_refuses_the_file_and_the_error_points_at_mjcf_fi
         MjcfError,
         match=r"flawed.yaml:3:7: mjcf: .*unrecognized attribute: 'group' Element 'default', line 7.*\(a spec can declare a repair: mjcf_fixes\)",
     ):
-        _gripper(write, "")
+        _gripper(write, "").check()
 
 
 def test_declared_repairs_give_the_intended_model(write: Callable[[str, str], Path]) -> None:
@@ -91,7 +91,7 @@ def test_a_repair_that_changes_nothing_is_an_error(write: Callable[[str, str], P
     with pytest.raises(
         MjcfError, match=r"mjcf_fixes on <actuator> changed nothing; delete it if the file is fixed"
     ):
-        _gripper(write, stale)
+        _gripper(write, stale).check()
 
 
 def test_a_set_that_the_file_already_has_is_a_stale_repair(write: Callable[[str, str], Path]) -> None:
@@ -100,7 +100,7 @@ def test_a_set_that_the_file_already_has_is_a_stale_repair(write: Callable[[str,
         + "  - element: compiler\n    set: {angle: radian}\n    why: the same setting a second time\n"
     )
     with pytest.raises(MjcfError, match=r"mjcf_fixes on <compiler> changed nothing"):
-        _gripper(write, already)
+        _gripper(write, already).check()
 
 
 def test_a_repair_must_say_exactly_one_thing(write: Callable[[str, str], Path]) -> None:
@@ -116,4 +116,4 @@ def test_repairs_are_refused_on_a_file_with_includes(write: Callable[[str, str],
     write("flawed.xml", FLAWED_GRIPPER.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'))
     (cls,) = assembler.register_specs(write("flawed.yaml", SPEC.format(fixes=ALL_FIXES)))
     with pytest.raises(MjcfError, match=r"mjcf_fixes cannot be used on a file that includes other files"):
-        cls(idn=0)
+        cls(idn=0).check()

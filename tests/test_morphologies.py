@@ -87,7 +87,7 @@ def test_nested_classes_and_childclass_resolve_as_mujoco_does(humanoid: Path) ->
     np.testing.assert_allclose(shoulder.range, np.deg2rad([-2, 2]))
     reloaded = mujoco.MjModel.from_xml_string(robot.get_xml())
     np.testing.assert_allclose(reloaded.joint("robot0_r_shoulder").range, np.deg2rad([-2, 2]))
-    assert robot.joint_values["r_shoulder"]["armature"].source == "mjcf (class 'arm')"
+    assert str(robot.joint_values["r_shoulder"]["armature"].source) == "mjcf (class 'arm')"
     # torso_yaw: childclass 'body' only -> damping 2, armature from the rule (index 0)
     assert model.joint("robot0_torso_yaw").armature[0] == 5.0
     assert model.body("robot0_torso").mass[0] == pytest.approx(5.0)

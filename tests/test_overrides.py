@@ -123,7 +123,7 @@ def test_an_override_applies_after_extends_is_resolved(write) -> None:  # type: 
 )
 def test_override_mistakes_are_one_line_naming_the_override(override: str, message: str) -> None:
     with pytest.raises(AssemblerError) as caught:
-        assembler.create_robot("Sparrow7", idn=0, overrides=[override])
+        assembler.create_robot("Sparrow7", idn=0, overrides=[override]).check()
     assert str(caught.value).startswith(message)
     assert len(caught.value.problems) == 1
 
@@ -132,7 +132,7 @@ def test_a_problem_an_override_causes_elsewhere_says_so() -> None:
     with pytest.raises(
         SpecError, match=r"default_grippers names arm 'left'.*\(with the overrides default_grippers.left\)"
     ):
-        assembler.create_robot("Sparrow7", idn=0, overrides={"default_grippers.left": "TriHand"})
+        assembler.create_robot("Sparrow7", idn=0, overrides={"default_grippers.left": "TriHand"}).check()
 
 
 def test_build_set_flags_write_the_overridden_model(

@@ -68,7 +68,7 @@ def test_a_file_that_appears_outside_after_loading_is_refused_when_read(write: W
     (cls,) = assembler.register_specs(spec)  # nothing there yet: nothing to refuse
     write("outside/twolink.xml", TWO_LINK_MJCF)
     with pytest.raises(MjcfError) as caught:
-        cls(idn=0)
+        cls(idn=0).check()
     assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"
 
 
@@ -112,7 +112,7 @@ def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
     write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir=meshdir, file=file.format(tmp=tmp_path)))
     (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
     with pytest.raises(MjcfError) as caught:
-        cls(idn=0)
+        cls(idn=0).check()
     assert str(caught.value) == (
         f"{tmp_path}/specs/meshy.yaml:2:7: mjcf: {tmp_path}/specs/robot: asset file "
         f"{tmp_path}/outside/tetra.obj {OUTSIDE}"
@@ -154,7 +154,7 @@ def test_package_paths_stay_in_their_package(write: Write, reference: str, messa
     spec = write("specs/arm.yaml", f"name: Arm\nmjcf: {reference}\n")
     (cls,) = assembler.register_specs(spec)
     with pytest.raises(MjcfError) as caught:
-        cls(idn=0)
+        cls(idn=0).check()
     assert str(caught.value) == f"{spec}:2:7: mjcf: {message}"
 
 
@@ -189,7 +189,7 @@ def test_files_read_while_parsing_are_confined_too(
     write("specs/twolink.xml", TWO_LINK_MJCF.replace("<worldbody>", f"{element}\n  <worldbody>", 1))
     (cls,) = assembler.register_specs(write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n"))
     with pytest.raises(MjcfError) as caught:
-        cls(idn=0)
+        cls(idn=0).check()
     assert str(caught.value) == (
         f"{tmp_path}/specs/arm.yaml:2:7: mjcf: {tmp_path}/specs/twolink.xml: "
         f"{target.format(tmp=tmp_path)} {OUTSIDE}"
@@ -220,7 +220,7 @@ def test_mjcf_with_a_doctype_is_refused_before_parsing(write: Write, tmp_path: P
     write("specs/bomb.xml", text)
     (cls,) = assembler.register_specs(write("specs/bomb.yaml", "name: Bomb\nmjcf: bomb.xml\n"))
     with pytest.raises(MjcfError) as caught:
-        cls(idn=0)
+        cls(idn=0).check()
     assert str(caught.value) == (
         f"{tmp_path}/specs/bomb.yaml:2:7: mjcf: {tmp_path}/specs/bomb.xml: a document type declaration "
         "(<!DOCTYPE ...>) is not allowed in MJCF: XML entities are declared there and their expansion "

@@ -42,7 +42,7 @@ def test_abstract_subclasses_opt_out_and_their_children_do_not(two_link: Path) -
     (cls,) = assembler.register_specs(two_link)
 
     class Family(cls):  # type: ignore[misc, valid-type]
-        abstract = True
+        in_registry = False
 
     class Member(Family):
         pass
@@ -90,7 +90,7 @@ def test_unknown_name_lists_registered_names_and_the_closest() -> None:
         RegistryError,
         match=r"^unknown robot 'Sparow7'. Did you mean 'Sparrow7'\? Registered robots: .*Finch6.*Sparrow7",
     ):
-        assembler.create_robot("Sparow7")
+        assembler.create_robot("Sparow7").check()
 
 
 def test_specs_can_extend_shipped_robots(write) -> None:  # type: ignore[no-untyped-def]

@@ -10,6 +10,7 @@ import pytest
 
 import assembler
 from assembler.errors import JointAttributeError, MjcfError, SpecError
+from assembler.models.provenance import Provenance
 
 
 @pytest.fixture
@@ -64,7 +65,7 @@ def test_set_joint_attribute_force_and_unset_semantics(robot: assembler.RobotMod
     robot.set_joint_attribute("damping", np.full(robot.dof, 0.5), force=True)
     model = robot.get_model()
     assert [model.joint(j).damping[0] for j in robot.joints] == [0.5, 0.5]
-    assert robot.joint_values["elbow"]["damping"].source == "set_joint_attribute"
+    assert robot.joint_values["elbow"]["damping"].source == Provenance("api")
     robot.set_joint_attribute("stiffness", np.array([1.0, 2.0]), force=False)  # unset: applied
     robot.set_joint_attribute("armature", np.array([9.0, 9.0]), force=False)  # all set: no-op
     model = robot.get_model()
@@ -122,14 +123,14 @@ def test_init_qpos_of_the_wrong_length_points_at_the_spec(write, two_link: Path)
         SpecError,
         match=r"twolink.yaml:3:12: init_qpos: expected 2 values \(one per joint: shoulder, elbow\), got 1$",
     ):
-        cls(idn=0)
+        cls(idn=0).check()
 
 
 def test_missing_mjcf_file_points_at_the_spec(write) -> None:  # type: ignore[no-untyped-def]
     spec = write("s/robot.yaml", "name: Ghost\nmjcf: nowhere.xml\n")
     (cls,) = assembler.register_specs(spec)
     with pytest.raises(MjcfError, match=r"robot.yaml:2:7: mjcf: MJCF file not found: .*nowhere.xml$"):
-        cls(idn=0)
+        cls(idn=0).check()
 
 
 def test_mjcf_that_mujoco_rejects_is_reported_with_both_files(write) -> None:  # type: ignore[no-untyped-def]
@@ -140,14 +141,14 @@ def test_mjcf_that_mujoco_rejects_is_reported_with_both_files(write) -> None:  #
     spec = write("s/robot.yaml", "name: Bad\nmjcf: bad.xml\n")
     (cls,) = assembler.register_specs(spec)
     with pytest.raises(MjcfError, match=r"robot.yaml:2:7: mjcf: .*bad.xml: MuJoCo cannot read it: .*hinj"):
-        cls(idn=0)
+        cls(idn=0).check()
 
 
 def test_two_root_bodies_are_refused(write) -> None:  # type: ignore[no-untyped-def]
     write("s/two.xml", "<mujoco><worldbody><body name='a'/><body name='b'/></worldbody></mujoco>")
     (cls,) = assembler.register_specs(write("s/robot.yaml", "name: Two\nmjcf: two.xml\n"))
     with pytest.raises(MjcfError, match=r"expected exactly one body in <worldbody>, found 2 \('a', 'b'\)"):
-        cls(idn=0)
+        cls(idn=0).check()
 
 
 def test_compile_errors_name_the_spec(write) -> None:  # type: ignore[no-untyped-def]

@@ -13,10 +13,8 @@ import os
 import time
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:
-    from assembler.models.part import PartModel
+import mujoco
 
 _CHUNK = 1 << 20
 
@@ -103,20 +101,12 @@ def verify(dependencies: Sequence[Dependency]) -> list[Dependency] | None:
     return current
 
 
-def source_files(part: PartModel) -> dict[str, tuple[int, int]]:
-    """The part's MJCF and every file it includes, with their (size, mtime_ns) when they were read."""
-    return {path: (size, mtime_ns) for path, size, mtime_ns in part.source.files}
-
-
-def part_files(part: PartModel) -> list[str]:
-    """Every file a compile of ``part`` reads: its MJCF, the files it includes, and asset files.
-
-    Asset paths are already absolute in the part's prepared spec (see assembler.mjcf.source).
-    """
-    spec = part.prepared
-    files = [str(part.source.path), *source_files(part)]
-    for group in (spec.meshes, spec.hfields, spec.skins):
+def asset_files(mjspec: mujoco.MjSpec) -> list[str]:
+    """Every asset file a compile of ``mjspec`` reads: meshes, height fields, skins and textures
+    (their paths are absolute in an assembly; see :mod:`assembler.mjcf.source`)."""
+    files: list[str] = []
+    for group in (mjspec.meshes, mjspec.hfields, mjspec.skins):
         files += [element.file for element in group if element.file]
-    for texture in spec.textures:
+    for texture in mjspec.textures:
         files += [file for file in (texture.file, *texture.cubefiles) if file]
     return files

@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.cli.common import add_assembly_arguments, assembled
+from assembler.cli.common import add_assembly_arguments, assembled, use_cache
 from assembler.mjcf.emit import bundle
 from assembler.paths import display_path
 
@@ -21,14 +21,15 @@ def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
 
 def run(args: argparse.Namespace) -> int:
     robot = assembled(args)
+    cache = use_cache(args)
     if args.bundle:
         name = Path(args.output).name if args.output else f"{type(robot).__name__}.xml"
-        robot.get_model()  # compile first: a robot that does not compile writes nothing
+        robot.get_model(cache=cache)  # compile first: a robot that does not compile writes nothing
         target = bundle(robot.mjspec, Path(args.bundle), name)
         print(f"wrote {display_path(target)} with its assets", file=sys.stderr)
     elif args.output:
-        target = robot.save(args.output)
+        target = robot.save(args.output, cache=cache)
         print(f"wrote {display_path(target)}", file=sys.stderr)
     else:
-        sys.stdout.write(robot.get_xml())
+        sys.stdout.write(robot.get_xml(cache=cache))
     return 0

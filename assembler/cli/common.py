@@ -7,13 +7,12 @@ import argparse
 from collections.abc import Sequence
 from pathlib import Path
 
-from assembler.assembly import DEFAULT, assemble
+from assembler.assembly import DEFAULT, assemble, create_robot
 from assembler.catalog import register_specs
+from assembler.documents import SPEC_SUFFIXES, Override, parse_overrides
 from assembler.errors import AssemblerError
-from assembler.loader import SPEC_SUFFIXES
 from assembler.models import RobotModel
-from assembler.overrides import Override, parse_overrides
-from assembler.registry import create_robot, robot_class
+from assembler.registry import robot_class
 
 
 def robot_name(reference: str) -> str:
@@ -31,8 +30,9 @@ def bare_robot(reference: str, idn: int, changes: Sequence[Override] = ()) -> Ro
     return create_robot(robot_name(reference), idn=idn, overrides=changes)
 
 
-def add_assembly_arguments(parser: argparse.ArgumentParser) -> None:
-    """The flags that choose what is assembled: robot, idn, base, grippers and ``--set`` overrides."""
+def add_assembly_arguments(parser: argparse.ArgumentParser, cached: bool = True) -> None:
+    """The flags that choose what is assembled: robot, idn, base, grippers and ``--set`` overrides
+    (and ``--no-cache`` for commands whose compile the cache can answer)."""
     parser.add_argument("robot", help="registered robot name or spec file")
     parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
     parser.add_argument("--base", help="a registered base instead of the robot's default")
@@ -45,9 +45,10 @@ def add_assembly_arguments(parser: argparse.ArgumentParser) -> None:
         help="gripper per arm (NAME may be none)",
     )
     parser.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
-    parser.add_argument(
-        "--no-cache", action="store_true", help="compile even if the compiled-model cache has this robot"
-    )
+    if cached:
+        parser.add_argument(
+            "--no-cache", action="store_true", help="compile even if the compiled-model cache has this robot"
+        )
     add_override_argument(parser)
 
 
@@ -90,9 +91,12 @@ def assembled(args: argparse.Namespace) -> RobotModel:
     if args.no_grippers:
         arms = getattr(robot_class(name).spec, "arms", ())
         grippers = {arm: None for arm in arms}
-    robot = assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=override_flags(args))
-    robot.use_cache = not getattr(args, "no_cache", False)
-    return robot
+    return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=override_flags(args))
+
+
+def use_cache(args: argparse.Namespace) -> bool:
+    """False when the command was given ``--no-cache``."""
+    return not getattr(args, "no_cache", False)
 
 
 def table(rows: Sequence[Sequence[str]]) -> str:

@@ -12,10 +12,10 @@ import json
 import sys
 from pathlib import Path
 
+from assembler.catalog import applied_overrides
 from assembler.experiment import load_experiment
 from assembler.mjcf.emit import write_atomically
 from assembler.models import RobotModel
-from assembler.overrides import applied_overrides
 from assembler.paths import display_path
 
 

@@ -25,7 +25,8 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "json":
         joints = {
             robot.naming_prefix + joint: {
-                a: {"value": v.value, "source": v.source} for a, v in values.items()
+                a: {"value": v.value, "source": str(v.source), "origin": v.source.origin}
+                for a, v in values.items()
             }
             for joint, values in robot.joint_values.items()
         }

@@ -10,16 +10,13 @@ import argparse
 import json
 from collections import Counter
 from collections.abc import Sequence
-from pathlib import Path
 
-from assembler.catalog import register_specs
-from assembler.cli.common import add_assembly_arguments, assembled
+from assembler.catalog import classes_named
+from assembler.cli.common import add_assembly_arguments, assembled, use_cache
 from assembler.cli.report import add_format_argument, github_annotation, location_fields, print_problems
 from assembler.errors import AssemblerError, Problem
 from assembler.lint import SEVERITIES, Finding, LintTarget, lint, part_target, robot_target
-from assembler.loader import SPEC_SUFFIXES
 from assembler.models import PartModel
-from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS, robot_class
 
 
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -35,24 +32,11 @@ def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
     parser.set_defaults(run=run)
 
 
-def _classes(references: Sequence[str]) -> list[type[PartModel]]:
-    """The parts to lint: spec files and folders registered together (so they may extend each other)."""
-    paths = [r for r in references if r.endswith(SPEC_SUFFIXES) or Path(r).exists()]
-    classes = list(register_specs(*paths)) if paths else []
-    for name in (r for r in references if r not in paths):
-        for table in (REGISTERED_ROBOTS, REGISTERED_BASES, REGISTERED_GRIPPERS):
-            if name in table:
-                classes.append(table[name])
-                break
-        else:
-            classes.append(robot_class(name))  # raises the registry's "unknown robot ... Did you mean"
-    return classes
-
-
 def _target(cls: type[PartModel], args: argparse.Namespace) -> LintTarget:
     name = cls.__name__
     if cls.family == "robot":
-        return robot_target(assembled(argparse.Namespace(**{**vars(args), "robot": name})), name)
+        robot = assembled(argparse.Namespace(**{**vars(args), "robot": name}))
+        return robot_target(robot, name, cache=use_cache(args))
     return part_target(cls(idn=args.idn), name)
 
 
@@ -89,7 +73,7 @@ def _as_json(finding: Finding) -> dict[str, object]:
 
 def run(args: argparse.Namespace) -> int:
     try:
-        classes = _classes([args.robot, *args.more])
+        classes = classes_named([args.robot, *args.more])
     except AssemblerError as error:
         print_problems(error.problems, args.format)
         return 1

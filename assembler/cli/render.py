@@ -36,7 +36,7 @@ def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
         epilog="Headless Linux: when MUJOCO_GL is unset and there is no DISPLAY, MUJOCO_GL=egl is "
         "used; set MUJOCO_GL=osmesa for software rendering.",
     )
-    add_assembly_arguments(parser)
+    add_assembly_arguments(parser, cached=False)  # a picture compiles the spec it poses
     parser.add_argument("-o", "--output", required=True, help="PNG file to write")
     parser.add_argument(
         "--views",

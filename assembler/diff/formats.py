@@ -8,7 +8,7 @@ from typing import Any
 
 from assembler.diff.compare import Comparison
 from assembler.diff.model_diff import ELEMENTS
-from assembler.loader import PATH_FIELDS
+from assembler.documents import PATH_FIELDS
 from assembler.paths import PACKAGE_SCHEME, display_path
 
 MODEL_TITLE = "compiled model (robots with their default base and grippers)"

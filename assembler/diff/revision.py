@@ -11,11 +11,20 @@ from __future__ import annotations
 import subprocess
 from pathlib import Path
 
-from assembler.catalog import registered_document
+from assembler.catalog import PARENTS
+from assembler.documents import (
+    SPEC_SUFFIXES,
+    LoadedSpec,
+    LocatedDocument,
+    is_file_reference,
+    parse_yaml,
+    resolve_path_fields,
+)
 from assembler.errors import Problem, SpecError
-from assembler.loader import PATH_FIELDS, SPEC_SUFFIXES, LoadedSpec, load_documents
+from assembler.fieldpath import TOP
+from assembler.loader import load_documents
 from assembler.paths import display_path, resolve_model_path
-from assembler.yaml_source import LocatedDocument, parse_yaml
+from assembler.schema import PartSpec
 
 
 def split_revision(reference: str) -> tuple[Path, str] | None:
@@ -63,20 +72,12 @@ def _document_at(path: Path, revision: str, repository: Path) -> LocatedDocument
         raise SpecError(
             Problem(f"cannot read it from git: {error.problems[0].message}", None, shown)
         ) from None
-    document = parse_yaml(text, shown)
-    for key in PATH_FIELDS:  # relative to the file's folder, as the loader does for files on disk
-        value = document.data.get(key)
-        if isinstance(value, str) and value:
-            document.data[key] = resolve_model_path(value, path.resolve().parent)
-    document.data["__dir__"] = str(path.resolve().parent)
+    document = parse_yaml(text, shown, path.resolve().parent)
+    resolve_path_fields(document)  # relative to the file's folder, as for files on disk
     return document
 
 
-def _is_file_reference(reference: object) -> bool:
-    return isinstance(reference, str) and (reference.endswith(SPEC_SUFFIXES) or "/" in reference)
-
-
-def load_at_revision(path: Path, revision: str) -> LoadedSpec:
+def load_at_revision(path: Path, revision: str) -> LoadedSpec[PartSpec]:
     """The spec ``path`` held at ``revision``, its same-repository ``extends:`` files read there too.
 
     Parents read at the revision join the batch under their names, and the child's ``extends`` is
@@ -87,17 +88,17 @@ def load_at_revision(path: Path, revision: str) -> LoadedSpec:
     child = _document_at(path, revision, repository)
     written = child.data.get("extends")
     documents, current, current_path, seen = [child], child, path.resolve(), {path.resolve()}
-    while _is_file_reference(reference := current.data.get("extends")):
+    while is_file_reference(reference := current.data.get("extends")):
         parent_path = Path(resolve_model_path(str(reference), current_path.parent))
         if parent_path in seen or not parent_path.is_relative_to(repository):
             break  # a cycle (the loader reports it) or a file outside the repository (read from disk)
         parent = _document_at(parent_path, revision, repository)
         if not isinstance(parent.data.get("name"), str):
-            raise SpecError(Problem("missing required field 'name'; add it", parent.location(())))
+            raise SpecError(Problem("missing required field 'name'; add it", parent.field_location(TOP)))
         current.data["extends"] = parent.data["name"]
         documents.append(parent)
         current, current_path = parent, parent_path
         seen.add(parent_path)
-    loaded = load_documents(documents, registered_document)[0]
+    loaded = load_documents(documents, PARENTS)[0]
     spec = loaded.spec.model_copy(update={"extends": written})
     return LoadedSpec(spec=spec, document=loaded.document)

@@ -2,7 +2,7 @@
 
 A side is loaded without registering it: two versions of one robot share a name, and neither
 may replace the registered one. Its class is made the way the catalog makes registered classes,
-but marked ``abstract`` so the registry's metaclass skips it, and it is compiled the way
+but not registered (``in_registry = False``), and it is compiled the way
 ``assembler build`` compiles (robots with their default base and grippers; bases and grippers alone).
 """
 
@@ -14,12 +14,14 @@ from pathlib import Path
 import mujoco
 
 from assembler.assembly import equip
-from assembler.catalog import TABLES, class_from_spec, registered_document
+from assembler.catalog import PARENTS, class_from_spec
 from assembler.diff.revision import load_at_revision, split_revision
+from assembler.documents import SPEC_SUFFIXES
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
-from assembler.loader import SPEC_SUFFIXES, load_paths
+from assembler.loader import load_paths
 from assembler.models import PartModel, RobotModel
 from assembler.paths import display_path
+from assembler.registry import find_registered, registered_names
 from assembler.schema import PartSpec
 
 DIFF_IDN = 0
@@ -48,10 +50,11 @@ class Side:
 
 
 def _registered(name: str) -> type[PartModel]:
-    for table in TABLES.values():
-        if name in table:
-            return table[name]  # type: ignore[no-any-return]
-    names = sorted({n for table in TABLES.values() for n in table})
+    try:
+        return find_registered(name)
+    except RegistryError:
+        pass
+    names = registered_names()
     raise RegistryError(
         f"'{name}' is neither a spec file, FILE@REVISION nor a registered name.{did_you_mean(name, names)} "
         f"Registered: {summarize_names(names, limit=40)}"
@@ -65,7 +68,7 @@ def load_side(reference: str) -> Side:
         return Side(reference, class_from_spec(load_at_revision(*revision), register=False))
     path = Path(reference)
     if path.is_file():
-        (loaded,) = load_paths([path], registered_document)
+        (loaded,) = load_paths([path], PARENTS)
         return Side(reference, class_from_spec(loaded, register=False))
     if reference.endswith(SPEC_SUFFIXES) or path.is_dir():
         what = "a folder; give one spec file" if path.is_dir() else "no such file"

@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Literal
 
+from assembler.fieldpath import FieldPath
 from assembler.schema import PartSpec
-from assembler.yaml_source import DataPath, dotted
 
 ChangeKind = Literal["changed", "added", "removed"]
 
@@ -27,16 +27,16 @@ class FieldChange:
     after: Any
 
 
-def _walk(before: Any, after: Any, path: DataPath, out: list[FieldChange]) -> None:
+def _walk(before: Any, after: Any, path: FieldPath, out: list[FieldChange]) -> None:
     if before == after:
         return
     if isinstance(before, dict) and isinstance(after, dict):
         for key in [*before, *(k for k in after if k not in before)]:
-            here = (*path, key)
+            here = path.child(key)
             if key not in after:
-                out.append(FieldChange(dotted(here), "removed", before[key], None))
+                out.append(FieldChange(str(here), "removed", before[key], None))
             elif key not in before:
-                out.append(FieldChange(dotted(here), "added", None, after[key]))
+                out.append(FieldChange(str(here), "added", None, after[key]))
             else:
                 _walk(before[key], after[key], here, out)
         return
@@ -44,19 +44,19 @@ def _walk(before: Any, after: Any, path: DataPath, out: list[FieldChange]) -> No
         items = [*before, *after]
         if len(before) == len(after) or (items and all(isinstance(x, dict) for x in items)):
             for index in range(max(len(before), len(after))):
-                here = (*path, index)
+                here = path.child(index)
                 if index >= len(after):
-                    out.append(FieldChange(dotted(here), "removed", before[index], None))
+                    out.append(FieldChange(str(here), "removed", before[index], None))
                 elif index >= len(before):
-                    out.append(FieldChange(dotted(here), "added", None, after[index]))
+                    out.append(FieldChange(str(here), "added", None, after[index]))
                 else:
                     _walk(before[index], after[index], here, out)
             return
-    out.append(FieldChange(dotted(path), "changed", before, after))
+    out.append(FieldChange(str(path), "changed", before, after))
 
 
 def spec_changes(before: PartSpec, after: PartSpec) -> list[FieldChange]:
     """Every field whose validated value differs, in the schema's field order."""
     out: list[FieldChange] = []
-    _walk(before.model_dump(mode="json"), after.model_dump(mode="json"), (), out)
+    _walk(before.model_dump(mode="json"), after.model_dump(mode="json"), FieldPath(), out)
     return out

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from assembler.fieldpath import FieldPath
 from assembler.lint.finding import Finding
 from assembler.lint.target import LintTarget
 
@@ -21,7 +22,8 @@ def tiny_index_armature(target: LintTarget) -> Iterator[Finding]:
     for part in target.parts:
         for joint, values in part.joint_values.items():
             armature = values.get("armature")
-            if armature is None or not armature.source.endswith("/(i+1)") or armature.value >= TINY_ARMATURE:
+            from_rule = armature is not None and armature.source.inverse_index is not None
+            if armature is None or not from_rule or armature.value >= TINY_ARMATURE:
                 continue
             yield Finding(
                 code="RA401",
@@ -35,5 +37,5 @@ def tiny_index_armature(target: LintTarget) -> Iterator[Finding]:
                     "set joint_defaults.armature to a value or a per-joint list that fits the motors, "
                     f"or give this joint its own under joints: (match: {joint})"
                 ),
-                location=target.spec_location(part, ("joint_defaults", "armature")),
+                location=target.spec_location(part, FieldPath(("joint_defaults", "armature"))),
             )

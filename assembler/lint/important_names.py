@@ -11,11 +11,11 @@ from collections.abc import Iterator
 
 import mujoco
 
+from assembler.fieldpath import FieldPath
 from assembler.lint.finding import Finding
 from assembler.lint.geometry import collides
 from assembler.lint.target import LintTarget
 from assembler.models import GripperModel, ManipulatorModel, PartModel
-from assembler.yaml_source import DataPath, dotted
 
 FINGERPAD_ROLES: tuple[str, ...] = ("left_fingerpad", "right_fingerpad")
 """The important_geoms roles robosuite's grasp check (``_check_grasp``) reads."""
@@ -29,21 +29,21 @@ _OBJECTS = {
 }
 
 
-def _declared_names(target: LintTarget) -> Iterator[tuple[PartModel, DataPath, str]]:
+def _declared_names(target: LintTarget) -> Iterator[tuple[PartModel, FieldPath, str]]:
     """(part, spec path, prefixed name) of every name a robot or gripper spec declares."""
     for part in target.parts:
         if isinstance(part, ManipulatorModel):
             for arm, body in part.eef_name.items():
-                yield part, ("eef_bodies", arm), body
+                yield part, FieldPath(("eef_bodies", arm)), body
         if isinstance(part, GripperModel):
-            yield part, ("eef_body",), part.eef_body
+            yield part, FieldPath(("eef_body",)), part.eef_body
             for role, site in part.important_sites.items():
-                yield part, ("important_sites", role), site
+                yield part, FieldPath(("important_sites", role)), site
             for role, geoms in part.important_geoms.items():
-                for geom in geoms:
-                    yield part, ("important_geoms", role), geom
+                for index, geom in enumerate(geoms):
+                    yield part, FieldPath(("important_geoms", role, index)), geom
             for role, sensor in part.important_sensors.items():
-                yield part, ("important_sensors", role), sensor
+                yield part, FieldPath(("important_sensors", role)), sensor
 
 
 def missing_important_names(target: LintTarget) -> Iterator[Finding]:
@@ -57,7 +57,7 @@ def missing_important_names(target: LintTarget) -> Iterator[Finding]:
             code="RA501",
             severity="error",
             subject=name,
-            why=f"{dotted(path)} names {what} {name}, which the assembled model does not have",
+            why=f"{path} names {what} {name}, which the assembled model does not have",
             fix=f"name an existing {what} in the spec, or add it to the MJCF",
             location=target.spec_location(part, path),
         )
@@ -77,7 +77,7 @@ def missing_fingerpads(target: LintTarget) -> Iterator[Finding]:
             subject=type(part).__name__,
             why=f"important_geoms has no {' or '.join(missing)}: robosuite's grasp check has no pads to test",
             fix="list the finger pads' collision geoms as important_geoms left_fingerpad and right_fingerpad",
-            location=target.spec_location(part, ("important_geoms",)),
+            location=target.spec_location(part, FieldPath(("important_geoms",))),
         )
 
 
@@ -97,5 +97,5 @@ def important_geoms_without_contact(target: LintTarget) -> Iterator[Finding]:
                     subject=geom,
                     why=f"important_geoms.{role} names a geom that never collides (contype, conaffinity 0)",
                     fix="name the collision geom instead (group 0), or give this one a contype/conaffinity",
-                    location=target.spec_location(part, ("important_geoms", role)),
+                    location=target.spec_location(part, FieldPath(("important_geoms", role))),
                 )

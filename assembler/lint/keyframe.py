@@ -11,6 +11,7 @@ from collections.abc import Iterator
 
 import mujoco
 
+from assembler.fieldpath import FieldPath
 from assembler.lint.finding import Finding
 from assembler.lint.target import LintTarget
 from assembler.mjcf.keyframe import HOME_KEY
@@ -39,7 +40,7 @@ def keyframe_outside_limits(target: LintTarget) -> Iterator[Finding]:
         part = target.part_of(name)
         if part is not None and part.spec.init_qpos is not None and name in part.joints:
             index = part.joints.index(name)
-            location = target.spec_location(part, ("init_qpos", index))
+            location = target.spec_location(part, FieldPath(("init_qpos", index)))
             source = f"init_qpos[{index}]"
         else:
             location = target.element_location(("joint",), name)

@@ -14,10 +14,10 @@ from pathlib import Path
 import mujoco
 
 from assembler.errors import Location
+from assembler.fieldpath import FieldPath
 from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import GripperModel, PartModel, RobotModel
 from assembler.paths import display_path
-from assembler.yaml_source import DataPath
 
 ACTUATOR_TAGS: tuple[str, ...] = (
     "general",
@@ -58,7 +58,7 @@ class LintTarget:
         owners = [p for p in self.parts if name.startswith(p.naming_prefix)]
         return max(owners, key=lambda p: len(p.naming_prefix), default=None)
 
-    def spec_location(self, part: PartModel | None, path: DataPath) -> Location | None:
+    def spec_location(self, part: PartModel | None, path: FieldPath) -> Location | None:
         """Where a field of ``part``'s spec is written (or the nearest enclosing field)."""
         if part is None or part.loaded is None:
             return None
@@ -70,7 +70,9 @@ class LintTarget:
         if part is None:
             return None
         local = name[len(part.naming_prefix) :]
-        return mjcf_element_location(part.source.path, tags, local) or self.spec_location(part, ("mjcf",))
+        return mjcf_element_location(part.source.path, tags, local) or self.spec_location(
+            part, FieldPath(("mjcf",))
+        )
 
 
 def mjcf_element_location(path: str | Path, tags: Sequence[str], name: str) -> Location | None:
@@ -101,9 +103,9 @@ def _posed(
     return LintTarget(name, model, data, parts, hangs_on_moving_body)
 
 
-def robot_target(robot: RobotModel, name: str | None = None) -> LintTarget:
+def robot_target(robot: RobotModel, name: str | None = None, cache: bool = True) -> LintTarget:
     """A robot with its base and grippers, compiled and posed at ``home``."""
-    return _posed(name or type(robot).__name__, robot.get_model(), (robot, *robot.models))
+    return _posed(name or type(robot).__name__, robot.get_model(cache=cache), (robot, *robot.models))
 
 
 def part_target(part: PartModel, name: str | None = None) -> LintTarget:

@@ -15,16 +15,12 @@ from collections.abc import Mapping
 
 import mujoco
 
+from assembler.mjcf.joints import joint_attribute
+
 SENTINEL = -7.251e33
 """A value no author writes; it marks attributes the file leaves to MuJoCo's built-in default."""
 
 SENSED_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
-
-
-def _joint_value(joint: mujoco.MjsJoint, attribute: str) -> float:
-    value = getattr(joint, attribute)
-    # Since MuJoCo 3.7 damping and stiffness are polynomial coefficient arrays; [0] is the XML value.
-    return float(value[0]) if hasattr(value, "__len__") else float(value)
 
 
 def _main_joint_default(root: ET.Element) -> ET.Element:
@@ -37,13 +33,16 @@ def _main_joint_default(root: ET.Element) -> ET.Element:
     return joint
 
 
-def authored_attributes(
-    root: ET.Element, spec: mujoco.MjSpec, included: Mapping[str, bytes] | None = None
-) -> list[dict[str, str]]:
-    """For each joint of ``spec`` (in MjSpec order), the attributes the file sets and how.
+Authored = dict[str, tuple[str, str]]
+"""Attribute -> (how, class name): how is ``literal`` (on the joint element), ``main default``
+(the file's class-less ``<default>``) or ``class`` (a default class, nested class or ``childclass``)."""
 
-    How is one of ``"literal"`` (on the joint element), ``"class '<name>'"`` (through a default
-    class, childclass or nesting) or ``"main default"`` (the file's class-less ``<default>``).
+
+def authored_attributes(
+    root: ET.Element, mjspec: mujoco.MjSpec, included: Mapping[str, bytes] | None = None
+) -> list[Authored]:
+    """For each joint of ``mjspec`` (in MjSpec order), the attributes the file sets and how.
+
     ``root`` is the file's parsed XML; it is not modified. ``included`` maps each ``<include file>``
     value to that file's bytes: the probe is parsed from memory, where MuJoCo cannot open files.
     """
@@ -61,16 +60,16 @@ def authored_attributes(
         for element in root.iter("joint")
         if element.get("name") and element.get("joint") is None and element.get("joint1") is None
     }
-    result: list[dict[str, str]] = []
-    for joint, probed in zip(spec.joints, probe.joints, strict=True):
+    result: list[Authored] = []
+    for joint, probed in zip(mjspec.joints, probe.joints, strict=True):
         own = literal.get(joint.name, {})
-        sets: dict[str, str] = {}
+        sets: Authored = {}
         for attribute in SENSED_ATTRIBUTES:
             if attribute in own:
-                sets[attribute] = "literal"
+                sets[attribute] = ("literal", "")
             elif attribute in in_main:
-                sets[attribute] = "main default"
-            elif _joint_value(probed, attribute) != SENTINEL:
-                sets[attribute] = f"class '{joint.classname.name}'"
+                sets[attribute] = ("main default", "")
+            elif joint_attribute(probed, attribute) != SENTINEL:
+                sets[attribute] = ("class", joint.classname.name)
         result.append(sets)
     return result

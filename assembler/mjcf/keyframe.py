@@ -9,6 +9,7 @@ control that holds them there. The result is written back to the spec so emitted
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import mujoco
 import numpy as np
@@ -19,6 +20,26 @@ from assembler.errors import MjcfError
 HOME_KEY = "home"
 
 FloatArray = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Keyframe:
+    """The ``home`` keyframe of a compiled model: joint positions and the controls that hold them."""
+
+    qpos: tuple[float, ...]
+    ctrl: tuple[float, ...]
+
+    @classmethod
+    def of(cls, model: mujoco.MjModel) -> Keyframe:
+        """The model's ``home`` keyframe."""
+        index = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
+        return cls(tuple(model.key_qpos[index].tolist()), tuple(model.key_ctrl[index].tolist()))
+
+    def write(self, mjspec: mujoco.MjSpec) -> None:
+        """Give ``mjspec`` this ``home`` keyframe (replacing one it has), so its XML carries it."""
+        key = _home_key(mjspec)
+        key.qpos = list(self.qpos)
+        key.ctrl = list(self.ctrl)
 
 
 def _home_key(spec: mujoco.MjSpec) -> mujoco.MjsKey:

@@ -20,8 +20,9 @@ import mujoco
 from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
-from assembler.mjcf.authored import authored_attributes
+from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.fixes import apply_fixes
+from assembler.mjcf.joints import named_joints
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.schema.fixes import MjcfFix
@@ -41,7 +42,7 @@ class MjcfSource:
     path: Path
     pristine: mujoco.MjSpec
     globals_xml: str
-    authored: tuple[dict[str, str], ...]
+    authored: tuple[Authored, ...]
     files: tuple[tuple[str, int, int], ...] = ()
     """The file and every file it includes, as (path, size, mtime_ns) when they were read."""
 
@@ -56,7 +57,7 @@ class MjcfSource:
     @property
     def joint_names(self) -> list[str]:
         """Names of the file's joints in MuJoCo's order, free joints excluded."""
-        return [j.name for j in self.pristine.joints if j.type != mujoco.mjtJoint.mjJNT_FREE]
+        return named_joints(self.pristine)
 
 
 def _asset_file(directory: str, base: Path, file: str, homes: Collection[Path]) -> str:

@@ -1,7 +1,15 @@
 """Robot, base and gripper model classes; spec-made classes derive from one of these."""
 
-from assembler.models.base_model import RobotBaseModel
-from assembler.models.gripper_model import GripperModel
+from assembler.models.bases import (
+    BASE_TYPE_CLASSES,
+    REGISTERED_BASES,
+    LegBaseModel,
+    MobileBaseModel,
+    MountModel,
+    NullBaseModel,
+    RobotBaseModel,
+)
+from assembler.models.gripper_model import REGISTERED_GRIPPERS, GripperModel
 from assembler.models.manipulator import (
     HumanoidModel,
     HumanoidUpperBodyModel,
@@ -9,7 +17,8 @@ from assembler.models.manipulator import (
     ManipulatorModel,
 )
 from assembler.models.part import PartModel
-from assembler.models.robot_model import RobotModel
+from assembler.models.registering import RegisteringMeta, Registry, source_of
+from assembler.models.robot_model import REGISTERED_ROBOTS, RobotModel
 
 MORPHOLOGY_CLASSES: dict[str, type[RobotModel]] = {
     "manipulator": ManipulatorModel,
@@ -19,18 +28,33 @@ MORPHOLOGY_CLASSES: dict[str, type[RobotModel]] = {
 }
 """The model class each robot spec's ``morphology`` becomes a subclass of."""
 
-KIND_CLASSES: dict[str, type[PartModel]] = {"base": RobotBaseModel, "gripper": GripperModel}
-"""The model class base and gripper specs become subclasses of."""
+REGISTRIES: dict[str, Registry[PartModel]] = {
+    "robot": REGISTERED_ROBOTS,  # type: ignore[dict-item]
+    "base": REGISTERED_BASES,  # type: ignore[dict-item]
+    "gripper": REGISTERED_GRIPPERS,  # type: ignore[dict-item]
+}
+"""Each family's registry."""
 
 __all__ = [
-    "KIND_CLASSES",
+    "BASE_TYPE_CLASSES",
     "MORPHOLOGY_CLASSES",
+    "REGISTERED_BASES",
+    "REGISTERED_GRIPPERS",
+    "REGISTERED_ROBOTS",
+    "REGISTRIES",
     "GripperModel",
     "HumanoidModel",
     "HumanoidUpperBodyModel",
+    "LegBaseModel",
     "LeggedManipulatorModel",
     "ManipulatorModel",
+    "MobileBaseModel",
+    "MountModel",
+    "NullBaseModel",
     "PartModel",
+    "RegisteringMeta",
+    "Registry",
     "RobotBaseModel",
     "RobotModel",
+    "source_of",
 ]

@@ -2,55 +2,57 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
-from assembler.errors import MjcfError, Problem, summarize_names
+from assembler.errors import Problem
+from assembler.fieldpath import FieldPath
 from assembler.models.part import FloatArray, PartModel
+from assembler.models.preparation import PreparedPart
+from assembler.models.registering import Registry
 from assembler.schema import GripperSpec
+
+REGISTERED_GRIPPERS: Registry[GripperModel] = Registry("gripper")
+"""Every registered gripper class by name."""
 
 
 class GripperModel(PartModel):
     """A gripper built from its spec; important sites, geoms and sensors are checked to exist."""
 
-    abstract = True
+    in_registry = False
     family: ClassVar[str] = "gripper"
+    registry: ClassVar[Registry[Any]] = REGISTERED_GRIPPERS
     spec: ClassVar[GripperSpec]
     collision_rgba = (0.0, 0.0, 0.5, 1.0)  # robosuite's GRIPPER_COLLISION_COLOR
 
     def __init__(self, idn: int | str = 0) -> None:
         super().__init__(idn)
-        self._check_important_names()
-        self.current_action = np.zeros(self.dof)
+        self._current_action: FloatArray | None = None
 
-    def _check_important_names(self) -> None:
+    @property
+    def current_action(self) -> FloatArray:
+        """The gripper's last action, one value per action dimension (zeros at first)."""
+        if self._current_action is None:
+            self._current_action = np.zeros(self.dof)
+        return self._current_action
+
+    @current_action.setter
+    def current_action(self, value: FloatArray) -> None:
+        self._current_action = np.asarray(value, dtype=float)
+
+    def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
         spec = self.spec
-        present = {
-            "important_sites": {s.name for s in self.prepared.sites},
-            "important_geoms": {g.name for g in self.prepared.geoms},
-            "important_sensors": {s.name for s in self.prepared.sensors},
-        }
-        problems: list[Problem] = []
-
-        def check(field: str, role: str, name: str) -> None:
-            if name not in present[field]:
-                known = summarize_names(sorted(n for n in present[field] if n))
-                problems.append(
-                    self.spec_problem((field, role), f"'{name}' does not exist in the MJCF. Known: {known}")
-                )
-
+        check = self.name_check(prepared)
         for role, name in spec.important_sites.items():
-            check("important_sites", role, name)
+            check.site(FieldPath(("important_sites", role)), name)
         for role, names in spec.important_geoms.items():
-            for name in names:
-                check("important_geoms", role, name)
+            for index, name in enumerate(names):
+                check.geom(FieldPath(("important_geoms", role, index)), name)
         for role, name in spec.important_sensors.items():
-            check("important_sensors", role, name)
-        if self.prepared.body(spec.eef_body) is None:
-            problems.append(self.spec_problem(("eef_body",), f"no body named '{spec.eef_body}' in the MJCF"))
-        if problems:
-            raise MjcfError(problems)
+            check.sensor(FieldPath(("important_sensors", role)), name)
+        check.body(FieldPath(("eef_body",)), spec.eef_body)
+        return [*super()._name_problems(prepared), *check.problems]
 
     @property
     def naming_prefix(self) -> str:

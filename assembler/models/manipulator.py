@@ -9,23 +9,34 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from assembler.errors import AssemblerError
+from assembler.errors import AssemblerError, Problem
+from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.models.gripper_model import GripperModel
 from assembler.models.groups import PerArm, arm_side, robosuite_group
 from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
+from assembler.models.preparation import PreparedPart
 from assembler.models.robot_model import RobotModel
 
 
 class ManipulatorModel(RobotModel):
     """A robot arm or arms; grippers attach at the end-effector bodies."""
 
-    abstract = True
+    in_registry = False
 
     def __init__(self, idn: int | str = 0) -> None:
         super().__init__(idn)
         self.grippers: dict[str, GripperModel] = {}
+
+    def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
+        check = self.name_check(prepared)
+        # The end-effector bodies the spec names, and the default ones where a gripper goes by default.
+        with_gripper = {arm for arm, gripper in self.spec.default_grippers.items() if gripper}
+        for arm in self.arms:
+            if arm in self.spec.eef_bodies or arm in with_gripper:
+                check.body(FieldPath(("eef_bodies", arm)), self.spec.eef_body(arm))
+        return [*super()._name_problems(prepared), *check.problems]
 
     # ----- arms and grippers --------------------------------------------------------------
 
@@ -69,7 +80,7 @@ class ManipulatorModel(RobotModel):
                 f"add_gripper expects a gripper (create_gripper(...)), got {type(gripper).__name__}"
             )
         self.grippers[arm] = gripper
-        self._rebuild()
+        self._changed()
 
     def _attach_grippers(self, assembly: mujoco.MjSpec) -> None:
         for arm, gripper in self.grippers.items():
@@ -77,7 +88,7 @@ class ManipulatorModel(RobotModel):
             compose.attach_gripper(
                 assembly,
                 self.eef_name[arm],
-                gripper.part_spec(),
+                gripper.part_mjspec(),
                 gripper.naming_prefix,
                 mount.pos if mount else None,
                 mount.quat if mount else None,
@@ -123,11 +134,11 @@ class ManipulatorModel(RobotModel):
 
     def _joint_groups(self) -> dict[str, list[str]]:
         groups: dict[str, list[str]] = {g: [] for g in ("torso", "head", "legs", "base", "right", "left")}
-        for joint in self._joint_names:
+        for joint in self.joint_names:
             groups.setdefault(self._robot_group(joint), []).append(self.naming_prefix + joint)
         base = self.base
         if base is not None:
-            for joint, prefixed in zip(base._joint_names, base.joints, strict=True):
+            for joint, prefixed in zip(base.joint_names, base.joints, strict=True):
                 groups.setdefault(base.group_of(joint), []).append(prefixed)
         return groups
 
@@ -136,7 +147,7 @@ class ManipulatorModel(RobotModel):
         groups: dict[str, list[str]] = {g: [] for g in ("torso", "head", "legs", "base", "right", "left")}
         parts: list[PartModel] = [self] + ([self.base] if self.base is not None else [])
         for part in parts:
-            for actuator in part.prepared.actuators:
+            for actuator in part.prepared_mjspec.actuators:
                 if not actuator.name:
                     continue
                 target = part.naming_prefix + actuator.target
@@ -205,16 +216,16 @@ class ManipulatorModel(RobotModel):
 class LeggedManipulatorModel(ManipulatorModel):
     """A manipulator with legs; the spec may remove the legs' actuation and the free joint."""
 
-    abstract = True
+    in_registry = False
 
 
 class HumanoidModel(ManipulatorModel):
     """A full-body humanoid: two arms with end-effectors, torso, head and legs."""
 
-    abstract = True
+    in_registry = False
 
 
 class HumanoidUpperBodyModel(ManipulatorModel):
     """An upper-body humanoid: two arms with end-effectors, torso and head, no legs."""
 
-    abstract = True
+    in_registry = False

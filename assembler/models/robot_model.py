@@ -1,9 +1,10 @@
-"""RobotModel: a robot part plus the base it stands on, assembled into one prefixed MjSpec.
+"""RobotModel: a robot part plus the base it stands on, built into one prefixed MjSpec.
 
-The assembly is a pure function of the parts (robot, base, grippers) and the robot's placement,
-built afresh when a part is added; joint attributes and placement are also written into the
-current assembly in place. Name lists come from the parts and the live assembly, so they cannot
-go stale the way robosuite's ``_elements`` do after a mobile base is merged.
+Building is pure: :meth:`RobotModel.build_mjspec` makes a new assembly from the parts (robot, base,
+grippers), their joint values and the robot's placement. Compiling belongs to the compile service
+(:mod:`assembler.cache.service`), which is given the build inputs and, only on a cache miss, the
+build itself. Name lists come from the parts, so they cannot go stale the way robosuite's
+``_elements`` do after a mobile base is merged.
 """
 
 from __future__ import annotations
@@ -14,23 +15,27 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
-from assembler.cache import load_or_compile
-from assembler.errors import AssemblerError, JointAttributeError, summarize_names
+from assembler.cache.inputs import BuildInputs, JointEdit
+from assembler.cache.service import Assembly, compile_model
+from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
+from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.mjcf.emit import to_xml, write_atomically
-from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
-from assembler.models.base_model import RobotBaseModel
+from assembler.mjcf.joints import set_joint_attribute_value
+from assembler.mjcf.keyframe import Keyframe, compile_with_home
+from assembler.models.bases import RobotBaseModel
 from assembler.models.joint_rules import JointValue
-from assembler.models.part import (
-    SETTABLE_JOINT_ATTRIBUTES,
-    FloatArray,
-    PartModel,
-    set_joint_attribute_value,
-)
+from assembler.models.part import FloatArray, PartModel
+from assembler.models.preparation import SETTABLE_JOINT_ATTRIBUTES, PreparedPart
+from assembler.models.provenance import API
+from assembler.models.registering import Registry
 from assembler.schema import RobotSpec
 
+REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
+"""Every registered robot class by name, in registration order."""
 
-def _euler_to_quat(rpy: FloatArray) -> FloatArray:
+
+def euler_to_quat(rpy: FloatArray) -> FloatArray:
     """(w, x, y, z) of the rotation Rz(yaw) Ry(pitch) Rx(roll), robosuite's ``set_base_ori`` convention."""
     quat = np.zeros(4)
     mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "XYZ")
@@ -40,8 +45,9 @@ def _euler_to_quat(rpy: FloatArray) -> FloatArray:
 class RobotModel(PartModel):
     """A robot built from its spec: prefixed MJCF, joint rules, base, placement and compilation."""
 
-    abstract = True
+    in_registry = False
     family: ClassVar[str] = "robot"
+    registry: ClassVar[Registry[Any]] = REGISTERED_ROBOTS
     spec: ClassVar[RobotSpec]
 
     def __init__(self, idn: int | str = 0) -> None:
@@ -50,65 +56,29 @@ class RobotModel(PartModel):
         self.mujoco_model: mujoco.MjModel | None = None
         self._root_pos: FloatArray | None = None
         self._root_quat: FloatArray | None = None
-        self._assembly: mujoco.MjSpec | None = None
-        self._home_keyframe: tuple[FloatArray, FloatArray] | None = None
-        self.use_cache = True
-        """Whether ``get_model()`` may answer from the compiled-model cache (``--no-cache`` sets False)."""
+        self._mjspec: mujoco.MjSpec | None = None
+        self._keyframe: Keyframe | None = None
 
-    # ----- assembly -----------------------------------------------------------------------
+    # ----- building -----------------------------------------------------------------------
 
-    @property
-    def mjspec(self) -> mujoco.MjSpec:
-        """The assembly (robot, base, grippers) as a MuJoCo spec; rebuilt after ``add_*`` calls.
-        Once built, ``get_model()`` compiles it as it is (it may have been edited), never from cache."""
-        if self._assembly is None:
-            self._assembly = self._new_assembly()
-            if self._home_keyframe is not None:
-                # The model came from the cache: its keyframe is what compiling this spec writes.
-                key = self._assembly.add_key()
-                key.name = HOME_KEY
-                key.qpos, key.ctrl = (values.tolist() for values in self._home_keyframe)
-        return self._assembly
-
-    def _new_assembly(self) -> mujoco.MjSpec:
+    def build_mjspec(self) -> mujoco.MjSpec:
+        """A new assembly of the robot, its base and grippers, placed; without keyframe, not compiled."""
         assembly = compose.new_assembly(self.source.globals_xml)
         self.build_into(assembly)
         return assembly
 
     def build_into(self, assembly: mujoco.MjSpec) -> None:
         """Attach this robot, its base and its grippers to ``assembly`` (used for scenes too)."""
-        robot = self.part_spec()
-        base = self.base
-        if base is None or base.type == "null":
+        robot = self.part_mjspec()
+        if self.base is None:
             compose.attach_at_world(assembly, robot, self.naming_prefix)
-            if base is not None:
-                compose.add_sites_at_world(assembly, base.part_spec(), base.naming_prefix)
-        elif base.type == "mount":
-            compose.attach_at_world(assembly, robot, self.naming_prefix)
-            compose.attach_mount(
-                assembly, self.root_body, base.part_spec(), base.naming_prefix, self._base_placement(base)
-            )
         else:
-            compose.attach_robot_on_support(
-                assembly,
-                robot,
-                self.naming_prefix,
-                base.part_spec(),
-                base.naming_prefix,
-                base.spec.support_body,
-                self._base_placement(base),
-                legged=base.type == "legged",
-            )
+            self.base.carry(assembly, robot, self.naming_prefix, self.base_offset - self.base.top_offset)
         self._attach_grippers(assembly)
         self._apply_placement(assembly)
 
     def _attach_grippers(self, assembly: mujoco.MjSpec) -> None:
         """Seam for ManipulatorModel."""
-
-    def _base_placement(self, base: RobotBaseModel) -> FloatArray:
-        # robosuite's rule (robot_model.py:161): the robot root's own MJCF position minus the
-        # base's top offset, used as a position inside the robot root's frame.
-        return self.base_offset - base.top_offset
 
     def _apply_placement(self, assembly: mujoco.MjSpec) -> None:
         root = assembly.body(self.root_body)
@@ -117,9 +87,32 @@ class RobotModel(PartModel):
         if self._root_quat is not None:
             root.quat = self._root_quat
 
-    def _rebuild(self) -> None:
-        self._assembly = None
-        self._home_keyframe = None
+    def build_inputs(self) -> BuildInputs:
+        """What defines this assembly, for the compile service's cache key (no MJCF is read)."""
+        grippers: dict[str, PartModel] = dict(getattr(self, "grippers", {}))
+
+        def as_tuple(values: FloatArray | None) -> tuple[float, ...] | None:
+            return None if values is None else tuple(float(v) for v in values)
+
+        return BuildInputs(
+            robot=self.part_inputs(),
+            base=self.base.part_inputs() if self.base is not None else None,
+            grippers=tuple((arm, gripper.part_inputs()) for arm, gripper in grippers.items()),
+            root_pos=as_tuple(self._root_pos),
+            root_quat=as_tuple(self._root_quat),
+        )
+
+    def _assembly(self) -> Assembly:
+        """The built assembly and what the compile service needs with it."""
+        parts = [self, *self.models]
+        read = {path: (size, mtime) for part in parts for path, size, mtime in part.source.files}
+        label = " + ".join(part.name for part in parts)
+        return Assembly(self.build_mjspec(), self.assembly_home(), read, label, self.describe())
+
+    def _changed(self) -> None:
+        """A part was added: the next build starts afresh."""
+        self._mjspec = None
+        self._keyframe = None
 
     def add_base(self, base: RobotBaseModel) -> None:
         """Merge ``base`` by its type: mount, mobile, legged or null. A second base is an error."""
@@ -130,7 +123,7 @@ class RobotModel(PartModel):
         if not isinstance(base, RobotBaseModel):
             raise AssemblerError(f"add_base expects a base (create_base(...)), got {type(base).__name__}")
         self.base = base
-        self._rebuild()
+        self._changed()
 
     # ----- names --------------------------------------------------------------------------
 
@@ -147,8 +140,7 @@ class RobotModel(PartModel):
     @property
     def cameras(self) -> list[str]:
         """Every named camera in the assembly (prefixed), including those of its base and grippers."""
-        # A throwaway assembly when none is built yet, so reading names keeps the cache usable.
-        assembly = self._assembly if self._assembly is not None else self._new_assembly()
+        assembly = self._mjspec if self._mjspec is not None else self.build_mjspec()
         return [c.name for c in assembly.cameras if c.name]
 
     @property
@@ -165,6 +157,14 @@ class RobotModel(PartModel):
     def all_actuators(self) -> list[str]:
         """The robot's actuators followed by its base's actuators."""
         return self.actuators + (self.base.actuators if self.base is not None else [])
+
+    def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
+        check = self.name_check(prepared)
+        groups = self.spec.joint_groups
+        if groups is not None:
+            for group in type(groups).model_fields:
+                check.joint_patterns(FieldPath(("joint_groups", group)), getattr(groups, group))
+        return [*super()._name_problems(prepared), *check.problems]
 
     # ----- spec fields --------------------------------------------------------------------
 
@@ -225,17 +225,17 @@ class RobotModel(PartModel):
         if position.shape != (3,) or not np.all(np.isfinite(position)):
             raise AssemblerError(f"set_base_xpos: expected 3 finite numbers, got {pos!r}")
         self._root_pos = position - self.bottom_offset
-        if self._assembly is not None:
-            self._apply_placement(self._assembly)
+        if self._mjspec is not None:
+            self._apply_placement(self._mjspec)
 
     def set_base_ori(self, rot: FloatArray) -> None:
         """Orient the robot by (roll, pitch, yaw) in radians, rotating about fixed x, y, z axes."""
         angles = np.asarray(rot, dtype=float)
         if angles.shape != (3,) or not np.all(np.isfinite(angles)):
             raise AssemblerError(f"set_base_ori: expected 3 finite angles, got {rot!r}")
-        self._root_quat = _euler_to_quat(angles)
-        if self._assembly is not None:
-            self._apply_placement(self._assembly)
+        self._root_quat = euler_to_quat(angles)
+        if self._mjspec is not None:
+            self._apply_placement(self._mjspec)
 
     def set_joint_attribute(self, attrib: str, values: FloatArray, force: bool = True) -> None:
         """Set ``attrib`` on each robot joint; with ``force=False`` only where no value is set yet.
@@ -258,11 +258,12 @@ class RobotModel(PartModel):
             raise JointAttributeError(
                 f"set_joint_attribute('{attrib}'): values must be finite and non-negative, got {array}"
             )
-        for name, value in zip(self._joint_names, array, strict=True):
+        self.joint_edits.append(JointEdit(attrib, tuple(float(v) for v in array), force))
+        for name, value in zip(self.joint_names, array, strict=True):
             if force or attrib not in self.joint_values[name]:
-                self.joint_values[name][attrib] = JointValue(float(value), "set_joint_attribute")
-                if self._assembly is not None:  # otherwise the next build applies joint_values
-                    joint = self._assembly.joint(self.naming_prefix + name)
+                self.joint_values[name][attrib] = JointValue(float(value), API)
+                if self._mjspec is not None:  # otherwise the next build applies joint_values
+                    joint = self._mjspec.joint(self.naming_prefix + name)
                     set_joint_attribute_value(joint, attrib, float(value))
 
     # ----- compile and emit ---------------------------------------------------------------
@@ -274,33 +275,36 @@ class RobotModel(PartModel):
             home.update(part.home_qpos())
         return home
 
-    def _what(self) -> str:
-        where = self.loaded.source if self.loaded is not None else type(self).__qualname__
-        return f"{where}: robot '{type(self).__name__}'"
+    @property
+    def mjspec(self) -> mujoco.MjSpec:
+        """The assembly (robot, base, grippers) as a MuJoCo spec, built on first use. Once you have
+        it, ``get_model()`` compiles it as it is (you may have edited it), never from the cache."""
+        if self._mjspec is None:
+            self._mjspec = self.build_mjspec()
+            if self._keyframe is not None:  # the model handed out earlier came with this keyframe
+                self._keyframe.write(self._mjspec)
+        return self._mjspec
 
-    def get_model(self) -> mujoco.MjModel:
+    def get_model(self, cache: bool = True) -> mujoco.MjModel:
         """Compile the assembly (with its ``home`` keyframe) into a new ``mujoco.MjModel``; an unchanged
-        robot comes from the compiled-model cache (assembler.cache) unless ``use_cache`` is False."""
-        if self._assembly is not None or not self.use_cache:
-            return compile_with_home(self.mjspec, self.assembly_home(), self._what())
-        model = load_or_compile(
-            self, lambda: compile_with_home(self._new_assembly(), self.assembly_home(), self._what())
-        )
-        home = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
-        self._home_keyframe = (model.key_qpos[home].copy(), model.key_ctrl[home].copy())
-        return model
+        robot comes from the compiled-model cache unless ``cache`` is False."""
+        if self._mjspec is not None:
+            return compile_with_home(self._mjspec, self.assembly_home(), self.describe())
+        compiled = compile_model(self.build_inputs(), self._assembly, cache=cache)
+        self._keyframe = compiled.keyframe
+        return compiled.model
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
 
-    def get_xml(self) -> str:
+    def get_xml(self, cache: bool = True) -> str:
         """The assembly as one standalone MJCF document (compiled once first, so it is valid)."""
-        self.get_model()
+        self.get_model(cache=cache)
         return to_xml(self.mjspec)
 
-    def save(self, path: str | Path) -> Path:
+    def save(self, path: str | Path, cache: bool = True) -> Path:
         """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""
         target = Path(path)
-        write_atomically(target, self.get_xml())
+        write_atomically(target, self.get_xml(cache=cache))
         return target

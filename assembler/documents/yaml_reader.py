@@ -11,47 +11,20 @@ nesting depth, items per list, and the number of values aliases may expand to.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import yaml
 
+from assembler.documents.located import LocatedDocument
 from assembler.errors import Location, Problem, SpecError
+from assembler.fieldpath import TOP, FieldPath
 from assembler.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
 
 PLAIN_DATA_TAGS = frozenset(
     f"tag:yaml.org,2002:{name}" for name in ("map", "seq", "str", "int", "float", "bool", "null")
 )
 """The only node types a spec may contain: no Python objects, no timestamps, no binary."""
-
-DataPath = tuple[str | int, ...]
-"""Where a value sits in a document: mapping keys and list indices from the top."""
-
-
-@dataclass
-class LocatedDocument:
-    """A parsed YAML mapping and the position of each of its values (and of each key)."""
-
-    data: dict[str, Any]
-    file: str
-    marks: dict[DataPath, Location] = field(default_factory=dict)
-
-    def location(self, path: DataPath) -> Location:
-        """The position of the deepest part of ``path`` that has one (the document start at worst)."""
-        for end in range(len(path), -1, -1):
-            mark = self.marks.get(tuple(path[:end]))
-            if mark is not None:
-                return mark
-        return Location(self.file, 1, 1)
-
-
-def dotted(path: DataPath) -> str:
-    """``joints[1].match`` for ``("joints", 1, "match")``: how users write a path."""
-    text = ""
-    for part in path:
-        text += f"[{part}]" if isinstance(part, int) else (f".{part}" if text else str(part))
-    return text
 
 
 def _location(file: str, node: yaml.Node) -> Location:
@@ -84,7 +57,7 @@ class _DepthLimitedLoader(yaml.SafeLoader):  # type: ignore[misc]  # PyYAML has 
 
 
 class _Builder:
-    """Turns composed YAML nodes into Python data, collecting marks and problems.
+    """Turns composed YAML nodes into Python data, collecting positions and problems.
 
     Aliases are expanded here (a node may be reached many times), so the values built are
     counted and building stops at :data:`MAX_YAML_VALUES`.
@@ -92,19 +65,20 @@ class _Builder:
 
     def __init__(self, file: str) -> None:
         self.file = file
-        self.marks: dict[DataPath, Location] = {}
+        self.fields: dict[FieldPath, Location] = {}
+        self.values: dict[FieldPath, Location] = {}
         self.problems: list[Problem] = []
-        self.values = 0
+        self.built = 0
         self._open: set[int] = set()  # collections being built: an alias back to one is a cycle
         self._constructor = yaml.constructor.SafeConstructor()
 
-    def build(self, node: yaml.Node, path: DataPath) -> Any:
+    def build(self, node: yaml.Node, path: FieldPath) -> Any:
         if id(node) in self._open:
             raise SpecError(
                 Problem(
                     "a recursive alias (an anchor used inside itself) has no value; write the values out",
                     _location(self.file, node),
-                    dotted(path) or None,
+                    path or None,
                 )
             )
         if len(path) > MAX_YAML_DEPTH:  # aliases can nest deeper than the text does
@@ -112,20 +86,20 @@ class _Builder:
                 Problem(
                     f"nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels once aliases are expanded",
                     _location(self.file, node),
-                    dotted(path) or None,
+                    path or None,
                 )
             )
-        self.values += 1
-        if self.values > MAX_YAML_VALUES:
+        self.built += 1
+        if self.built > MAX_YAML_VALUES:
             raise SpecError(
                 Problem(
                     f"the values in the document, aliases expanded, exceed the limit of {MAX_YAML_VALUES}; "
                     "each alias (*name) repeats all its anchor names: write the values out instead",
                     _location(self.file, node),
-                    dotted(path) or None,
+                    path or None,
                 )
             )
-        self.marks.setdefault(path, _location(self.file, node))
+        self.fields.setdefault(path, _location(self.file, node))
         if node.tag not in PLAIN_DATA_TAGS:
             self._problem(node, path, f"YAML tag '{node.tag}' is not allowed; specs are plain data")
             return None
@@ -135,7 +109,7 @@ class _Builder:
                 Problem(
                     f"a {kind} of {len(node.value)} items exceeds the limit of {MAX_YAML_ITEMS} items",
                     _location(self.file, node),
-                    dotted(path) or None,
+                    path or None,
                 )
             )
         if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
@@ -143,12 +117,12 @@ class _Builder:
             try:
                 if isinstance(node, yaml.MappingNode):
                     return self._mapping(node, path)
-                return [self.build(item, (*path, index)) for index, item in enumerate(node.value)]
+                return [self.build(item, path.child(index)) for index, item in enumerate(node.value)]
             finally:
                 self._open.discard(id(node))
         return self._scalar(node, path)
 
-    def _scalar(self, node: yaml.Node, path: DataPath) -> Any:
+    def _scalar(self, node: yaml.Node, path: FieldPath) -> Any:
         try:
             return self._constructor.construct_object(node, deep=True)
         except (ValueError, KeyError, TypeError, OverflowError):
@@ -157,14 +131,17 @@ class _Builder:
             self._problem(node, path, f"YAML: cannot read {_short(node.value)!r} as {kind}")
             return None
 
-    def _mapping(self, node: yaml.MappingNode, path: DataPath) -> dict[str, Any]:
+    def _mapping(self, node: yaml.MappingNode, path: FieldPath) -> dict[str, Any]:
         result: dict[str, Any] = {}
         first_seen: dict[str, Location] = {}
         for key_node, value_node in node.value:
             if key_node.tag == "tag:yaml.org,2002:merge":
                 self._problem(key_node, path, "YAML merge keys ('<<') are not supported; write the keys out")
                 continue
-            key = self.build(key_node, (*path, "<key>")) if isinstance(key_node, yaml.ScalarNode) else None
+            # Built like any value (tags checked, counted), at a placeholder path that is then dropped.
+            key_placeholder = path.child("<key>")
+            key = self.build(key_node, key_placeholder) if isinstance(key_node, yaml.ScalarNode) else None
+            self.fields.pop(key_placeholder, None)
             if not isinstance(key, str):
                 self._problem(key_node, path, f"keys must be text, got {key_node.tag.rsplit(':', 1)[-1]}")
                 continue
@@ -172,22 +149,21 @@ class _Builder:
             if key in first_seen:
                 self._problem(
                     key_node,
-                    (*path, key),
+                    path.child(key),
                     f"duplicate key '{key}' (first at line {first_seen[key].line}); keep one",
                 )
                 continue
             first_seen[key] = here
             # A key's own position is what an "unknown key" error should point at.
-            key_path: DataPath = (*path, key)
-            self.marks[key_path] = here
+            key_path = path.child(key)
+            self.fields[key_path] = here
             result[key] = self.build(value_node, key_path)
             if not isinstance(value_node, yaml.ScalarNode) or value_node.value:
-                self.marks[key_path + ("<value>",)] = _location(self.file, value_node)
-        self.marks.pop((*path, "<key>"), None)
+                self.values[key_path] = _location(self.file, value_node)
         return result
 
-    def _problem(self, node: yaml.Node, path: DataPath, message: str) -> None:
-        self.problems.append(Problem(message, _location(self.file, node), dotted(path) or None))
+    def _problem(self, node: yaml.Node, path: FieldPath, message: str) -> None:
+        self.problems.append(Problem(message, _location(self.file, node), path or None))
 
 
 def _short(text: object, limit: int = 40) -> str:
@@ -276,8 +252,9 @@ def _compose(text: str, file: str) -> yaml.Node | None:
             loader.dispose()
 
 
-def parse_yaml(text: str, file: str) -> LocatedDocument:
-    """Parse one YAML document that must be a mapping; raise :class:`SpecError` with positions."""
+def parse_yaml(text: str, file: str, folder: Path | None = None) -> LocatedDocument:
+    """Parse one YAML document that must be a mapping; raise :class:`SpecError` with positions.
+    ``folder`` is where the document's relative file references start (None: the working directory)."""
     if len(text) > MAX_SPEC_BYTES:
         raise SpecError(
             Problem(
@@ -292,11 +269,11 @@ def parse_yaml(text: str, file: str) -> LocatedDocument:
         raise SpecError(Problem("a spec must be a YAML mapping (key: value lines)", _location(file, node)))
     builder = _Builder(file)
     try:
-        data = builder.build(node, ())
+        data = builder.build(node, TOP)
     except yaml.constructor.ConstructorError as error:
         mark = error.problem_mark
         where = Location(file, mark.line + 1, mark.column + 1) if mark else Location(file)
         raise SpecError(Problem(f"YAML: {_short(error.problem, 200)}", where)) from None
     if builder.problems:
         raise SpecError(builder.problems)
-    return LocatedDocument(data=data, file=file, marks=builder.marks)
+    return LocatedDocument(data=data, file=file, folder=folder, fields=builder.fields, values=builder.values)

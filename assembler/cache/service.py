@@ -1,0 +1,115 @@
+"""The compile service: an assembly's build inputs in, a compiled model with its ``home`` keyframe out,
+from the cache when its inputs and files are unchanged.
+
+Models build MuJoCo specs; this module compiles them. A lookup hashes the build inputs
+(:mod:`assembler.cache.key`) and, on a hit, never calls the build: no MJCF is parsed. On a miss the
+build callback assembles the spec, it is compiled once with its ``home`` keyframe, and the entry is
+written in the background with every file the compile read. The keyframe travels with the model
+(:class:`~assembler.mjcf.keyframe.Keyframe`), so an assembly built later (for its XML) carries
+exactly the keyframe of the model that was handed out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import mujoco
+
+from assembler.cache.dependencies import Recorder, asset_files
+from assembler.cache.inputs import BuildInputs
+from assembler.cache.key import cache_key
+from assembler.cache.memory import RecentModels
+from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
+from assembler.cache.store import CacheInfo, ModelStore
+from assembler.mjcf.keyframe import Keyframe, compile_with_home
+
+
+@dataclass(frozen=True)
+class Assembly:
+    """What a model's build hands the compiler."""
+
+    mjspec: mujoco.MjSpec
+    """The assembled spec (robot, base, grippers, placement), without its keyframe."""
+
+    home: Mapping[str, float]
+    """Joint name -> initial position for the ``home`` keyframe (others stay at qpos0)."""
+
+    read_files: Mapping[str, tuple[int, int]]
+    """Files read before the compile (each part's MJCF and includes), with their (size, mtime_ns) then."""
+
+    label: str
+    """What was compiled, for people reading the cache folder (e.g. ``Panda0 + RethinkMount0``)."""
+
+    what: str
+    """How a compile error names it: ``specs/panda.yaml:1:1: robot 'Panda'``."""
+
+
+@dataclass(frozen=True)
+class CompiledModel:
+    """A compiled model and its ``home`` keyframe."""
+
+    model: mujoco.MjModel
+    keyframe: Keyframe
+
+
+@dataclass
+class LookupCounts:
+    """What compiles in this process did, for tests and the benchmark."""
+
+    hits: int = 0
+    """Answered from the cache."""
+
+    misses: int = 0
+    """Compiled, then stored."""
+
+    bypassed: int = 0
+    """Compiled without looking: cache disabled, or a part the key cannot describe."""
+
+
+counts = LookupCounts()
+
+_recent = RecentModels()
+
+
+def default_store() -> ModelStore:
+    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``)."""
+    return ModelStore(cache_dir(), max_bytes())
+
+
+def clear(store: ModelStore) -> CacheInfo:
+    """Empty ``store``, and forget the models this process kept from it; returns what was there."""
+    _recent.forget(str(store.directory))
+    return store.clear()
+
+
+def compile_assembly(assembly: Assembly) -> CompiledModel:
+    """Compile ``assembly`` with its ``home`` keyframe (written into its spec too); no cache."""
+    model = compile_with_home(assembly.mjspec, assembly.home, assembly.what)
+    return CompiledModel(model, Keyframe.of(model))
+
+
+def compile_model(inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True) -> CompiledModel:
+    """The model ``inputs`` describe: from the cache, or ``build()`` compiled and stored for next time.
+
+    ``cache=False`` (``--no-cache``), ``ASSEMBLER_NO_CACHE`` or a hand-written part compile every time.
+    """
+    key = cache_key(inputs) if cache and not cache_disabled() else None
+    if key is None:
+        counts.bypassed += 1
+        return compile_assembly(build())
+    store = default_store()
+    place = (str(store.directory), key)
+    model = _recent.get(place)
+    if model is None:
+        found = store.load(key)
+        model = _recent.offer(place, *found) if found is not None else None
+    if model is not None:
+        counts.hits += 1
+        return CompiledModel(model, Keyframe.of(model))
+    counts.misses += 1
+    assembly = build()
+    recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
+    compiled = compile_assembly(assembly)
+    store.save(key, compiled.model, recorder, assembly.label)
+    return compiled

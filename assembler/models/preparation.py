@@ -1,0 +1,127 @@
+"""A part's MJCF made ready to attach: what the spec removes and adds, and its joint values.
+
+Steps, once per part instance: drop the file's keyframes (the assembler writes one merged ``home``
+keyframe), remove the actuation of the joints the spec names (with everything driving or measuring
+them), remove the free joint if asked, add the spec's joints, then resolve every joint parameter
+(MJCF value, spec rule, spec override) with its source.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+
+from assembler.errors import MjcfError, Problem, SpecError, summarize_names
+from assembler.fieldpath import FieldPath
+from assembler.mjcf.added_joints import add_joints
+from assembler.mjcf.joints import joint_attribute, named_joints
+from assembler.mjcf.removal import remove_free_joints, remove_joints
+from assembler.mjcf.source import MjcfSource
+from assembler.mjcf.structure import root_body_name
+from assembler.models.joint_rules import (
+    JointTable,
+    JointValue,
+    SpecProblem,
+    apply_default_rules,
+    apply_joint_overrides,
+    matching_joints,
+    no_match,
+)
+from assembler.models.provenance import Provenance
+from assembler.schema import JOINT_RULE_ATTRIBUTES, PartSpec
+
+SETTABLE_JOINT_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
+"""Attributes ``set_joint_attribute`` accepts: the ones whose MJCF origin the assembler tracks."""
+
+REMOVE_ACTUATION = FieldPath(("remove_actuation",))
+MJCF = FieldPath(("mjcf",))
+
+
+@dataclass
+class PreparedPart:
+    """What a part knows once its MJCF is read: the file, the prepared MjSpec, its joints and their values."""
+
+    source: MjcfSource
+    mjspec: mujoco.MjSpec
+    """The file's spec after the spec's removals and additions (never compiled or attached)."""
+
+    root_name: str
+    """The part's single root body, as named in the MJCF."""
+
+    joint_names: list[str]
+    """The part's joints after removals, MuJoCo's order, free joints excluded."""
+
+    joint_values: JointTable
+    """Each joint's frictionloss, damping, armature (and what else the file sets), with sources."""
+
+
+def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> list[str]:
+    """The joints ``remove_actuation`` names (globs expanded); a pattern matching nothing is an error."""
+    patterns: list[str] = list(getattr(spec, "remove_actuation", []))
+    names = source.joint_names
+    removed: list[str] = []
+    problems = []
+    for index, pattern in enumerate(patterns):
+        matched = matching_joints(pattern, names)
+        if not matched:
+            problems.append(problem(REMOVE_ACTUATION.child(index), no_match(pattern, names)))
+        removed += [name for name in matched if name not in removed]
+    if problems:
+        raise SpecError(problems)
+    return removed
+
+
+def prepared_mjspec(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> mujoco.MjSpec:
+    """A fresh copy of the file's spec with the spec's removals and additions applied."""
+    mjspec = source.new_spec()
+    for key in list(mjspec.keys):  # the assembler writes one merged "home" keyframe instead
+        mjspec.delete(key)
+    remove_joints(mjspec, removed_joints(spec, source, problem))
+    if getattr(spec, "remove_free_joint", False):
+        remove_free_joints(mjspec)
+    try:
+        add_joints(mjspec, getattr(spec, "added_joints", []))
+    except MjcfError as error:
+        path = FieldPath(("added_joints",))
+        raise MjcfError([problem(path, p.message) for p in error.problems]) from None
+    return mjspec
+
+
+def joint_table(spec: PartSpec, source: MjcfSource, kept: list[str], problem: SpecProblem) -> JointTable:
+    """Every joint parameter of the kept joints, with its source."""
+    # Rules index over every joint of the file, before removals (robosuite applies its defaults
+    # before removing actuation, so GR1ArmsOnly keeps the armature of its original indices).
+    names = source.joint_names
+    pristine = {j.name: j for j in source.pristine.joints}
+    in_file = [{a: joint_attribute(pristine[n], a) for a in SETTABLE_JOINT_ATTRIBUTES} for n in names]
+    authored_by_name = dict(zip((j.name for j in source.pristine.joints), source.authored, strict=True))
+    authored = [authored_by_name[n] for n in names]
+    table = apply_default_rules(names, in_file, authored, spec.joint_defaults, problem)
+    table = {name: values for name, values in table.items() if name in kept}
+    for index, added in enumerate(getattr(spec, "added_joints", [])):
+        origin = Provenance("added", index=index)
+        table[added.name] = {a: JointValue(float(getattr(added, a)), origin) for a in JOINT_RULE_ATTRIBUTES}
+    apply_joint_overrides(table, kept, spec.joints, problem)
+    return table
+
+
+def init_qpos_problems(spec: PartSpec, joint_names: list[str], problem: SpecProblem) -> list[Problem]:
+    """``init_qpos`` must give one value per joint."""
+    init_qpos = spec.init_qpos
+    if init_qpos is None or len(init_qpos) == len(joint_names):
+        return []
+    names = summarize_names(joint_names)
+    message = f"expected {len(joint_names)} values (one per joint: {names}), got {len(init_qpos)}"
+    return [problem(FieldPath(("init_qpos",)), message)]
+
+
+def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> PreparedPart:
+    """All preparation steps of one part."""
+    try:
+        root = root_body_name(source)
+    except MjcfError as error:
+        raise MjcfError([problem(MJCF, p.message) for p in error.problems]) from None
+    mjspec = prepared_mjspec(spec, source, problem)
+    kept = named_joints(mjspec)
+    return PreparedPart(source, mjspec, root, kept, joint_table(spec, source, kept, problem))
