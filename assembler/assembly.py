@@ -7,7 +7,7 @@ from collections.abc import Mapping
 
 from assembler.catalog import with_overrides
 from assembler.documents import Overrides
-from assembler.errors import AssemblerError, RegistryError
+from assembler.errors import AssemblerError, Problem, RegistryError
 from assembler.fieldpath import FieldPath
 from assembler.models import (
     REGISTERED_BASES,
@@ -57,16 +57,18 @@ def assemble(
     return equip(model, base, grippers)
 
 
-def _from_spec_default(model: RobotModel, path: FieldPath, error: RegistryError) -> RegistryError:
+def _from_spec_default(model: RobotModel, path: FieldPath, error: RegistryError) -> list[Problem]:
     """A registry miss for a name the robot's spec gave by default, located at that field."""
-    return RegistryError([model.spec_problem(path, p.message) for p in error.problems])
+    return [model.spec_problem(path, p.message) for p in error.problems]
 
 
 def equip(
     model: RobotModel, base: str | None = DEFAULT, grippers: Mapping[str, str | None] | None = None
 ) -> RobotModel:
-    """Give a created robot its base and grippers as :func:`assemble` does (same defaults and idn)."""
+    """Give a created robot its base and grippers as :func:`assemble` does (same defaults and idn);
+    every unknown name at once, those the robot's spec gave at their spec field."""
     robot, idn = type(model).__name__, model.idn
+    problems: list[Problem] = []
     base_name = model.default_base if base == DEFAULT else base
     if base_name is not None:
         try:
@@ -74,10 +76,12 @@ def equip(
         except RegistryError as error:
             if base != DEFAULT:
                 raise
-            raise _from_spec_default(model, FieldPath(("default_base",)), error) from None
+            problems += _from_spec_default(model, FieldPath(("default_base",)), error)
     if not isinstance(model, ManipulatorModel):
         if grippers:
             raise AssemblerError(f"{robot} has no arms to put grippers on")
+        if problems:
+            raise RegistryError(problems)
         return model
     chosen: dict[str, str | None] = {arm: model.spec.default_grippers.get(arm) for arm in model.arms}  # type: ignore[call-overload]
     given = dict(grippers or {})
@@ -93,5 +97,7 @@ def equip(
         except RegistryError as error:
             if arm in given:
                 raise
-            raise _from_spec_default(model, FieldPath(("default_grippers", arm)), error) from None
+            problems += _from_spec_default(model, FieldPath(("default_grippers", arm)), error)
+    if problems:
+        raise RegistryError(problems)
     return model

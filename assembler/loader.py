@@ -9,6 +9,7 @@ document's model by its ``kind`` and walks folders.
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.documents import (
@@ -67,10 +68,28 @@ def load_documents(
     return loaded
 
 
-def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> list[LoadedSpec[PartSpec]]:
-    """Load spec files and folders (recursively) together; every problem of every file at once."""
-    documents: list[LocatedDocument] = []
-    problems: list[Problem] = []
+PLACEMENT_KINDS: tuple[str, ...] = ("scene", "experiment")
+"""Kinds of spec file that place registered robots rather than describe a part."""
+
+
+@dataclass
+class SpecFiles:
+    """The spec files found in some files and folders, read with positions."""
+
+    parts: list[LocatedDocument] = field(default_factory=list)
+    """Robots, bases and grippers."""
+
+    placements: list[LocatedDocument] = field(default_factory=list)
+    """Scenes and experiments (found in folders, or given)."""
+
+    problems: list[Problem] = field(default_factory=list)
+    """Files that could not be read."""
+
+
+def read_spec_files(paths: Iterable[str | Path]) -> SpecFiles:
+    """Every spec file in ``paths`` (files, and folders recursively), read but not validated."""
+    found = SpecFiles()
+    problems = found.problems
     for given in paths:
         path = Path(given)
         if path.is_dir():
@@ -84,11 +103,28 @@ def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> l
             try:
                 if file is not path:  # found in a folder: a link must not lead out of it
                     confine(file, [path], "spec file ")
-                documents.append(read_document(file))
+                document = read_document(file)
             except AssemblerError as error:
                 problems.extend(error.problems)
+                continue
+            placement = document.data.get("kind") in PLACEMENT_KINDS
+            (found.placements if placement else found.parts).append(document)
+    return found
+
+
+def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> list[LoadedSpec[PartSpec]]:
+    """Load the part specs in spec files and folders (recursively) together; every problem of every
+    file at once. Scene and experiment files in folders are not parts and are left to their commands."""
+    paths = list(paths)
+    found = read_spec_files(paths)
+    problems = list(found.problems)
+    given = {Path(path).resolve() for path in paths}
+    for document in found.placements:
+        if Path(document.file).resolve() in given:  # named itself, not found in a folder
+            kind = document.data["kind"]
+            problems.append(document.problem(KIND, f"a {kind} file is not a part spec; use `assembler {kind}`"))
     try:
-        loaded = load_documents(documents, parents)
+        loaded = load_documents(found.parts, parents)
     except AssemblerError as error:
         problems.extend(error.problems)
         loaded = []

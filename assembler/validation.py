@@ -13,10 +13,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.assembly import equip
-from assembler.catalog import register_specs
+from assembler.catalog import PARENTS, register_loaded
+from assembler.documents import LocatedDocument, validate
+from assembler.documents.validation import reading_order
 from assembler.errors import AssemblerError, MissingPackageError, Problem
+from assembler.loader import load_documents, read_spec_files
 from assembler.models import PartModel, RobotModel
-from assembler.references import spec_reference_problems
+from assembler.references import placement_reference_problems, spec_reference_problems
+from assembler.schema import ExperimentSpec, SceneSpec
+
+PLACEMENT_MODELS: dict[str, type[SceneSpec] | type[ExperimentSpec]] = {
+    "scene": SceneSpec,
+    "experiment": ExperimentSpec,
+}
 
 
 @dataclass
@@ -28,6 +37,9 @@ class ValidationReport:
 
     compiled: list[str] = field(default_factory=list)
     """Specs compiled by MuJoCo (robots with their default base and grippers; bases and grippers alone)."""
+
+    placements: list[str] = field(default_factory=list)
+    """Scene and experiment files checked (their schema and the names they use)."""
 
     unchecked: list[str] = field(default_factory=list)
     """Specs not checked against their MJCF: the package holding it is not installed."""
@@ -44,11 +56,26 @@ def _compile(cls: type[PartModel]) -> None:
         part.compile_alone()
 
 
+def _placement_problems(document: LocatedDocument) -> list[Problem]:
+    model = PLACEMENT_MODELS[document.data["kind"]]
+    try:
+        loaded = validate(document, model)
+    except AssemblerError as error:
+        return error.problems
+    return placement_reference_problems(document, loaded.spec.robots)
+
+
 def validate_specs(paths: Sequence[str | Path], compile: bool = False) -> ValidationReport:
-    """Register the specs in ``paths`` and check each one; :class:`AssemblerError` lists every problem."""
-    classes = register_specs(*paths)
-    report = ValidationReport(classes)
+    """Register the part specs in ``paths`` and check each one, then the scene and experiment files
+    among them; :class:`AssemblerError` lists every problem."""
+    found = read_spec_files(paths)
+    if found.problems:
+        raise AssemblerError(found.problems)
+    classes = register_loaded(load_documents(found.parts, PARENTS))
+    report = ValidationReport(classes, placements=[document.file for document in found.placements])
     problems: list[Problem] = []
+    for document in found.placements:
+        problems += _placement_problems(document)
     for cls in classes:
         if cls.loaded is not None:
             problems += spec_reference_problems(cls.loaded)
@@ -63,5 +90,5 @@ def validate_specs(paths: Sequence[str | Path], compile: bool = False) -> Valida
         except AssemblerError as error:
             problems.extend(error.problems)
     if problems:
-        raise AssemblerError(problems)
+        raise AssemblerError(sorted(problems, key=reading_order))
     return report

@@ -88,7 +88,7 @@ def test_registering_the_same_file_again_is_harmless(two_link: Path) -> None:
 def test_unknown_name_lists_registered_names_and_the_closest() -> None:
     with pytest.raises(
         RegistryError,
-        match=r"^unknown robot 'Sparow7'. Did you mean 'Sparrow7'\? Registered robots: .*Finch6.*Sparrow7",
+        match=r"^unknown robot 'Sparow7'. Did you mean 'Sparrow7'\?$",
     ):
         assembler.create_robot("Sparow7").check()
 

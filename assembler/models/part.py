@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from assembler.cache.inputs import JointEdit, PartInputs
 from assembler.documents import LoadedSpec
+from assembler.documents.validation import reading_order
 from assembler.errors import Location, MjcfError, Problem, SpecError
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
@@ -88,10 +89,10 @@ class PartModel(metaclass=RegisteringMeta):
     def prepared(self) -> PreparedPart:
         """The part's MJCF read and prepared (once); every problem of the spec against it at once."""
         if self._prepared is None:
-            prepared = prepare(self.spec, self._load_source(), self.spec_problem)
-            problems = self._name_problems(prepared)
+            prepared, problems = prepare(self.spec, self._load_source(), self.spec_problem)
+            problems += self._name_problems(prepared)
             if problems:
-                raise SpecError(problems)
+                raise SpecError(sorted(problems, key=reading_order))
             self._prepared = prepared
         return self._prepared
 

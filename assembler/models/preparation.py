@@ -56,8 +56,8 @@ class PreparedPart:
     """Each joint's frictionloss, damping, armature (and what else the file sets), with sources."""
 
 
-def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> list[str]:
-    """The joints ``remove_actuation`` names (globs expanded); a pattern matching nothing is an error."""
+def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[list[str], list[Problem]]:
+    """The joints ``remove_actuation`` names (globs expanded), and a problem per pattern matching nothing."""
     patterns: list[str] = list(getattr(spec, "remove_actuation", []))
     names = source.joint_names
     removed: list[str] = []
@@ -67,17 +67,15 @@ def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> 
         if not matched:
             problems.append(problem(REMOVE_ACTUATION.child(index), no_match(pattern, names)))
         removed += [name for name in matched if name not in removed]
-    if problems:
-        raise SpecError(problems)
-    return removed
+    return removed, problems
 
 
-def prepared_mjspec(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> mujoco.MjSpec:
+def prepared_mjspec(spec: PartSpec, source: MjcfSource, removed: list[str], problem: SpecProblem) -> mujoco.MjSpec:
     """A fresh copy of the file's spec with the spec's removals and additions applied."""
     mjspec = source.new_spec()
     for key in list(mjspec.keys):  # the assembler writes one merged "home" keyframe instead
         mjspec.delete(key)
-    remove_joints(mjspec, removed_joints(spec, source, problem))
+    remove_joints(mjspec, removed)
     if getattr(spec, "remove_free_joint", False):
         remove_free_joints(mjspec)
     try:
@@ -116,12 +114,19 @@ def init_qpos_problems(spec: PartSpec, joint_names: list[str], problem: SpecProb
     return [problem(FieldPath(("init_qpos",)), message)]
 
 
-def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> PreparedPart:
-    """All preparation steps of one part."""
+def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[PreparedPart, list[Problem]]:
+    """All preparation steps of one part, and the problems of the spec they found (the part is not
+    usable when there are any; they are returned so that every problem can be reported at once)."""
     try:
         root = root_body_name(source)
     except MjcfError as error:
         raise MjcfError([problem(MJCF, p.message) for p in error.problems]) from None
-    mjspec = prepared_mjspec(spec, source, problem)
+    removed, problems = removed_joints(spec, source, problem)
+    mjspec = prepared_mjspec(spec, source, removed, problem)
     kept = named_joints(mjspec)
-    return PreparedPart(source, mjspec, root, kept, joint_table(spec, source, kept, problem))
+    try:
+        table = joint_table(spec, source, kept, problem)
+    except SpecError as error:
+        problems += error.problems
+        table = {}
+    return PreparedPart(source, mjspec, root, kept, table), problems

@@ -27,6 +27,14 @@ def source_of(cls: type) -> str:
     return f"{cls.__module__}.{cls.__qualname__}"
 
 
+def unknown_name(family: str, name: str, known: list[str]) -> str:
+    """The one wording of an unknown name: the closest known name if there is one, else all of them."""
+    suggestion = did_you_mean(name, known)
+    if suggestion:
+        return f"unknown {family} '{name}'.{suggestion}"
+    return f"unknown {family} '{name}'. Registered {family}s: {summarize_names(known, limit=40)}"
+
+
 class Registry(dict[str, type[T]], Generic[T]):
     """One family's classes by name (robot, base or gripper), in registration order."""
 
@@ -51,11 +59,7 @@ class Registry(dict[str, type[T]], Generic[T]):
         try:
             return self[name]
         except KeyError:
-            names = sorted(self)
-            raise RegistryError(
-                f"unknown {self.family} '{name}'.{did_you_mean(name, names)} "
-                f"Registered {self.family}s: {summarize_names(names, limit=40)}"
-            ) from None
+            raise RegistryError(unknown_name(self.family, name, sorted(self))) from None
 
     @contextlib.contextmanager
     def transaction(self) -> Iterator[None]:
