@@ -122,7 +122,9 @@ def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> l
     for document in found.placements:
         if Path(document.file).resolve() in given:  # named itself, not found in a folder
             kind = document.data["kind"]
-            problems.append(document.problem(KIND, f"a {kind} file is not a part spec; use `assembler {kind}`"))
+            problems.append(
+                document.problem(KIND, f"a {kind} file is not a part spec; use `assembler {kind}`")
+            )
     try:
         loaded = load_documents(found.parts, parents)
     except AssemblerError as error:

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import argparse
 import json
+from collections.abc import Iterator
 from pathlib import Path
 
 import mujoco
 import pytest
 
-from assembler.cli import main
+from assembler.cli import build_parser, main
 from assembler.paths import shipped_specs_dir
 
 
@@ -195,3 +197,36 @@ def test_scene_places_robots_with_unique_names(capsys: pytest.CaptureFixture[str
     assert data.body("robot1_base").xpos[0] == pytest.approx(0.6)
     assert data.body("mobilebase1_base").xpos[2] == pytest.approx(0.0, abs=1e-9)  # the rover on the floor
     assert model.body("robot1_manipulator_mount").parentid[0] == model.body("mobilebase1_support").id
+
+
+def _options(parser: argparse.ArgumentParser, command: str) -> Iterator[tuple[str, argparse.Action]]:
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, subparser in action.choices.items():
+                yield from _options(subparser, name)
+        elif not isinstance(action, argparse._HelpAction):
+            yield command, action
+
+
+def test_every_option_of_every_command_has_help_text() -> None:
+    missing = [
+        (command, action.dest) for command, action in _options(build_parser(), "assembler") if not action.help
+    ]
+    assert missing == []
+
+
+@pytest.mark.parametrize("where", ["before", "after"])
+def test_specs_and_allow_path_work_before_or_after_the_command(
+    where: str, two_link: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    options = ["--specs", str(two_link.parent), "--allow-path", str(two_link.parent)]
+    argv = [*options, "inspect", "TwoLink"] if where == "before" else ["inspect", "TwoLink", *options]
+    code, out, _ = run(capsys, *argv)
+    assert code == 0 and "robot0_shoulder" in out
+
+
+def test_validate_help_offers_only_the_formats_it_accepts(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit):
+        main(["validate", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--format {text,github}" in text and "json" not in text

@@ -11,7 +11,7 @@ import pytest
 import yaml
 
 from assembler.cli import main
-from assembler.cli.schema import REFERENCE_FILE, SCHEMA_FILE, schema_text, spec_json_schema
+from assembler.schema.json_schema import REFERENCE_FILE, SCHEMA_FILE, schema_text, spec_json_schema
 from assembler.schema.reference import markdown_reference, type_text
 
 ROOT = Path(__file__).parent.parent

@@ -33,14 +33,14 @@ COMMANDS = (listing, validate, lint, build, scene, experiment, variants, inspect
 """Subcommand modules, in the order ``assembler --help`` lists them."""
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="assembler", description="Assemble MuJoCo robots from declarative YAML specs."
-    )
+def _add_global_options(parser: argparse.ArgumentParser, after_command: bool) -> None:
+    """``--specs`` and ``--allow-path``, before the command or after it (kept apart, then joined)."""
+    suffix = "_after" if after_command else ""
     parser.add_argument(
         "--specs",
         action="append",
         default=[],
+        dest="specs" + suffix,
         metavar="DIR",
         help="also register the specs in DIR (repeatable)",
     )
@@ -48,18 +48,36 @@ def build_parser() -> argparse.ArgumentParser:
         "--allow-path",
         action="append",
         default=[],
+        dest="allow_path" + suffix,
         metavar="DIR",
         help="let specs read files below DIR too (repeatable); by default a spec reads only its own "
         "folder, the shipped specs and assets, and package:// paths (see SECURITY.md)",
     )
-    commands = parser.add_subparsers(dest="command", required=True)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assembler", description="Assemble MuJoCo robots from declarative YAML specs."
+    )
+    _add_global_options(parser, after_command=False)
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for command in COMMANDS:
         command.add_parser(commands)
+    for subparser in commands.choices.values():
+        _add_global_options(subparser, after_command=True)
     return parser
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def parse(argv: Sequence[str] | None = None) -> argparse.Namespace:
+    """The command line, with the options given before and after the command joined."""
     args = build_parser().parse_args(argv)
+    args.specs = [*args.specs, *args.specs_after]
+    args.allow_path = [*args.allow_path, *args.allow_path_after]
+    return args
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = parse(argv)
     try:
         with allowing(args.allow_path):
             add_spec_folders(args.specs)

@@ -13,8 +13,10 @@ from assembler.schema import JOINT_RULE_ATTRIBUTES
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser("inspect", help="joint parameters and where each value came from")
     parser.add_argument("robot", help="registered robot name or spec file")
-    parser.add_argument("--idn", type=int, default=0)
-    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
+    parser.add_argument(
+        "--format", choices=("text", "json"), default="text", help="text: a table (default); json: for tools"
+    )
     add_override_argument(parser)
     parser.set_defaults(run=run)
 

@@ -13,7 +13,13 @@ from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED
 
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser("list", help="registered robots (or bases, grippers)")
-    parser.add_argument("what", nargs="?", choices=("robots", "bases", "grippers"), default="robots")
+    parser.add_argument(
+        "what",
+        nargs="?",
+        choices=("robots", "bases", "grippers"),
+        default="robots",
+        help="what to list (robots)",
+    )
     parser.set_defaults(run=run)
 
 

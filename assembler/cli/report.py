@@ -23,11 +23,16 @@ GITHUB_LEVELS: dict[str, str] = {"error": "error", "warning": "warning", "info":
 
 def add_format_argument(parser: argparse.ArgumentParser, formats: Sequence[str] = FORMATS) -> None:
     """The ``--format`` flag, text by default."""
+    meanings = {
+        "text": "lines for people (default)",
+        "json": "for tools",
+        "github": "GitHub Actions annotations",
+    }
     parser.add_argument(
         "--format",
         choices=tuple(formats),
         default="text",
-        help="text (default), json, or github (annotations for GitHub Actions)",
+        help="; ".join(f"{name}: {meanings[name]}" for name in formats),
     )
 
 

@@ -56,7 +56,9 @@ class PreparedPart:
     """Each joint's frictionloss, damping, armature (and what else the file sets), with sources."""
 
 
-def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[list[str], list[Problem]]:
+def removed_joints(
+    spec: PartSpec, source: MjcfSource, problem: SpecProblem
+) -> tuple[list[str], list[Problem]]:
     """The joints ``remove_actuation`` names (globs expanded), and a problem per pattern matching nothing."""
     patterns: list[str] = list(getattr(spec, "remove_actuation", []))
     names = source.joint_names
@@ -70,7 +72,9 @@ def removed_joints(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> 
     return removed, problems
 
 
-def prepared_mjspec(spec: PartSpec, source: MjcfSource, removed: list[str], problem: SpecProblem) -> mujoco.MjSpec:
+def prepared_mjspec(
+    spec: PartSpec, source: MjcfSource, removed: list[str], problem: SpecProblem
+) -> mujoco.MjSpec:
     """A fresh copy of the file's spec with the spec's removals and additions applied."""
     mjspec = source.new_spec()
     for key in list(mjspec.keys):  # the assembler writes one merged "home" keyframe instead

@@ -1,0 +1,94 @@
+"""The package's structure keeps its promises: imports go one way (no module imports a module that
+imports it back, at any distance), none hides in a function, and every module says what it holds."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parent.parent / "assembler"
+
+
+def _module_name(path: Path) -> str:
+    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+MODULES = {_module_name(path): path for path in PACKAGE.rglob("*.py")}
+
+
+def _owner(target: str) -> str | None:
+    """The project module an import target names (``assembler.models.part.PartModel`` -> its module)."""
+    while target and target not in MODULES:
+        target = target.rpartition(".")[0]
+    return target or None
+
+
+def _imports(tree: ast.AST) -> list[tuple[ast.AST, str]]:
+    found: list[tuple[ast.AST, str]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [(node, alias.name) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            found += [(node, f"{node.module}.{alias.name}") for alias in node.names]
+    return [(node, name) for node, name in found if name.startswith("assembler")]
+
+
+def _graph() -> dict[str, set[str]]:
+    graph: dict[str, set[str]] = {}
+    for name, path in MODULES.items():
+        targets = {_owner(target) for _, target in _imports(ast.parse(path.read_text()))}
+        graph[name] = {t for t in targets if t is not None and t != name}
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """Strongly connected components with more than one module (Tarjan)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+
+    def visit(node: str) -> None:
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        for target in graph[node]:
+            if target not in index:
+                visit(target)
+                low[node] = min(low[node], low[target])
+            elif target in stack:
+                low[node] = min(low[node], index[target])
+        if low[node] == index[node]:
+            component = []
+            while True:
+                member = stack.pop()
+                component.append(member)
+                if member == node:
+                    break
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for node in graph:
+        if node not in index:
+            visit(node)
+    return found
+
+
+def test_no_module_imports_itself_back_through_others() -> None:
+    assert _cycles(_graph()) == []
+
+
+def test_no_project_module_is_imported_inside_a_function_or_only_for_type_checking() -> None:
+    hidden = []
+    for name, path in MODULES.items():
+        tree = ast.parse(path.read_text())
+        top_level = {id(node) for node in tree.body}
+        hidden += [f"{name}:{node.lineno}" for node, _ in _imports(tree) if id(node) not in top_level]
+    assert hidden == []
+
+
+def test_every_module_has_a_docstring() -> None:
+    missing = [
+        name for name, path in MODULES.items() if ast.get_docstring(ast.parse(path.read_text())) is None
+    ]
+    assert missing == []
