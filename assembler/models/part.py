@@ -28,6 +28,7 @@ from assembler.models.joint_rules import (
     apply_overrides,
     matching_joints,
 )
+from assembler.models.kept_elements import require_kept_alone
 from assembler.registry import RegisteringMeta
 from assembler.schema import JOINT_RULE_ATTRIBUTES, PartSpec
 from assembler.yaml_source import DataPath
@@ -186,6 +187,7 @@ class PartModel(metaclass=RegisteringMeta):
         assembly = compose.new_assembly(self.source.globals_xml)
         compose.attach_at_world(assembly, self.part_spec(), self.naming_prefix)
         self._complete_alone(assembly)
+        require_kept_alone(self, assembly)
         where = self.loaded.source if self.loaded is not None else type(self).__qualname__
         return compile_with_home(
             assembly, self.home_qpos(), f"{where}: {self.family} '{type(self).__name__}'"

@@ -16,11 +16,12 @@ import numpy as np
 
 from assembler.cache import load_or_compile
 from assembler.errors import AssemblerError, JointAttributeError, summarize_names
-from assembler.mjcf import compose
+from assembler.mjcf import census, compose
 from assembler.mjcf.emit import to_xml, write_atomically
 from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
 from assembler.models.base_model import RobotBaseModel
 from assembler.models.joint_rules import JointValue
+from assembler.models.kept_elements import require_kept
 from assembler.models.part import (
     SETTABLE_JOINT_ATTRIBUTES,
     FloatArray,
@@ -77,6 +78,7 @@ class RobotModel(PartModel):
 
     def build_into(self, assembly: mujoco.MjSpec) -> None:
         """Attach this robot, its base and its grippers to ``assembly`` (used for scenes too)."""
+        before = census.of_spec(assembly)
         robot = self.part_spec()
         base = self.base
         if base is None or base.type == "null":
@@ -101,6 +103,7 @@ class RobotModel(PartModel):
             )
         self._attach_grippers(assembly)
         self._apply_placement(assembly)
+        require_kept(self, assembly, before)  # nothing of the parts dropped in silence
 
     def _attach_grippers(self, assembly: mujoco.MjSpec) -> None:
         """Seam for ManipulatorModel."""
