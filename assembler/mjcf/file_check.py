@@ -3,7 +3,8 @@
 ``MjSpec.attach`` silently drops what it cannot resolve: an actuator on a joint that does not exist,
 a sensor of a missing site, a tendon through a missing joint, an equality, contact pair or exclude
 naming a missing body or geom, a skin bone... MuJoCo compiling the file itself refuses every one of
-them. So each file is compiled once on its own, as MuJoCo would (after its declared ``mjcf_fixes``,
+them (and so does ``MjSpec.copy()``: the check compiles a spec freshly parsed, never a copy). So each
+file is compiled once on its own, as MuJoCo would (after its declared ``mjcf_fixes``,
 asset paths absolute), and a refusal becomes one located problem (:mod:`assembler.mjcf.refusal`).
 The check runs once per file version: :func:`assembler.mjcf.source.load_mjcf` caches its result.
 
@@ -59,10 +60,13 @@ def _stand_in_assets(spec: mujoco.MjSpec) -> None:
             hfield.userdata = [0.0] * 4
 
 
-def check_as_mujoco(spec: mujoco.MjSpec, shown: str, lines: LineMap) -> None:
-    """Refuse the file behind ``spec`` (displayed as ``shown``) if MuJoCo refuses to compile it;
-    ``lines`` maps MuJoCo's line numbers to the file's. ``spec`` itself is not changed."""
-    probe = spec.copy()
+def check_as_mujoco(probe: mujoco.MjSpec, shown: str, lines: LineMap) -> None:
+    """Refuse the file (displayed as ``shown``) if MuJoCo refuses to compile it; ``lines`` maps
+    MuJoCo's line numbers to the file's.
+
+    ``probe`` must come straight from parsing the file and is used up: its assets are replaced.
+    Not a copy of a spec: ``MjSpec.copy()`` drops what it cannot resolve, as ``attach`` does.
+    """
     _stand_in_assets(probe)
     probe.compiler.boundmass = max(probe.compiler.boundmass, MASS_FLOOR)
     probe.compiler.boundinertia = max(probe.compiler.boundinertia, MASS_FLOOR)

@@ -23,7 +23,9 @@ LineMap = Callable[[int], "int | None"]
 
 _COMPILE_WHERE = re.compile(r"Element name '(?P<name>[^']*)', id \d+(?:, line (?P<line>\d+))?")
 _PARSE_WHERE = re.compile(r"Element '(?P<tag>[^']*)', line (?P<line>\d+)")
-_REFERENCE = re.compile(r"not found|unknown|unrecognized (?:name|object)|missing transmission|must have valid")
+_REFERENCE = re.compile(
+    r"not found|unknown|unrecognized (?:name|object)|missing transmission|must have valid"
+)
 """Words of MuJoCo's messages about a name that points at nothing (or at nothing of the right kind)."""
 
 REPAIR_HINT = " (a spec can declare a repair: mjcf_fixes)"

@@ -180,7 +180,10 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
-    check_as_mujoco(spec, shown, lines)  # what attaching would drop in silence, MuJoCo refuses here
+    # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
+    probe = _parse(path, fixes)[1]
+    _absolutize_assets(probe, path.parent, homes)
+    check_as_mujoco(probe, shown, lines)  # what attaching would drop in silence, MuJoCo refuses here
     return MjcfSource(
         path=path,
         pristine=spec,
