@@ -8,6 +8,8 @@ excludes, assets, custom data, model-wide sections and more.
 
 from __future__ import annotations
 
+import struct
+
 ARM = """\
 <mujoco model="{name}">
   {head}
@@ -75,6 +77,22 @@ BALL_TIP = """
 
 CUBE_OBJ = "v 0 0 0\nv 0.05 0 0\nv 0 0.05 0\nv 0 0 0.05\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 """A mesh file some cases read (written next to the MJCF)."""
+
+
+def skin_file(bones: list[tuple[str, list[int]]]) -> bytes:
+    """A MuJoCo skin file (.skn) of one triangle; each bone names a body and the vertices it moves."""
+    data = struct.pack("4i", 3, 0, 1, len(bones)) + struct.pack("9f", 0, 0, 0, 0.3, 0, 0, 0, 0.3, 0)
+    data += struct.pack("3i", 0, 1, 2)
+    for body, vertices in bones:
+        data += body.encode().ljust(40, b"\0") + struct.pack("7f", 0, 0, -0.2, 1, 0, 0, 0)
+        data += struct.pack(
+            f"i{len(vertices)}i{len(vertices)}f", len(vertices), *vertices, *[1.0] * len(vertices)
+        )
+    return data
+
+
+SLEEVE_SKN = skin_file([("link1", [0, 1]), ("link2", [2])])
+"""A skin file some cases read (written next to the MJCF)."""
 
 CASES: dict[str, dict[str, str]] = {
     "motors": {
@@ -357,6 +375,9 @@ CASES: dict[str, dict[str, str]] = {
             <bone body="link1" bindpos="0 0 -0.2" bindquat="1 0 0 0" vertid="0 1" vertweight="1 1"/>
             <bone body="link2" bindpos="-0.3 0 -0.2" bindquat="1 0 0 0" vertid="2" vertweight="1"/>
           </skin>""",
+    },
+    "skin-from-a-file": {
+        "asset": '<skin name="sleeve_file" file="sleeve.skn" inflate="0.01"/>',
     },
     "gripper-like-coupled-fingers": {
         "tip": FINGERS,

@@ -15,6 +15,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError
+from tests.semantics_robots import skin_file
 
 ASSET, BODY, SECTIONS = "ASSET", "BODY", "SECTIONS"
 """Where a case puts its one element: among the assets, in the innermost body, at the end of the file."""
@@ -295,3 +296,16 @@ def test_a_moving_body_left_massless_for_the_assembly_to_fill_passes_the_file_ch
     robot = cls(idn=0)  # the file check passes...
     with pytest.raises(MjcfError, match=r"MuJoCo cannot compile the assembly: mass and inertia of moving"):
         robot.get_model()  # ...and the assembly, with nothing on the body, is refused all the same
+
+
+def test_a_skin_file_whose_bone_names_a_missing_body_is_refused(tmp_path: Path) -> None:
+    # The check stands in for mesh and texture files, but reads skin files: they name bodies.
+    (tmp_path / "sleeve.skn").write_bytes(skin_file([("link1", [0, 1]), ("nope", [2])]))
+    spec = _robot_folder(tmp_path, ASSET, '<skin name="sleeve" file="sleeve.skn"/>')
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(MjcfError) as error:
+        cls(idn=0)
+    assert str(error.value) == (
+        f"{spec}:2:7: mjcf: {tmp_path}/robot.xml:{_line_of(ASSET)}: MuJoCo refuses it: unknown body 'nope' "
+        f"in skin (element 'sleeve'); correct the name or remove the element{REPAIR_HINT}"
+    )

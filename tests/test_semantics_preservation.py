@@ -19,7 +19,7 @@ import pytest
 
 import assembler
 from assembler.models.part import COLLISION_GROUP, PartModel
-from tests.semantics_robots import CASES, CUBE_OBJ, robot_mjcf
+from tests.semantics_robots import CASES, CUBE_OBJ, SLEEVE_SKN, robot_mjcf
 
 PREFIX = "robot0_"
 
@@ -105,6 +105,7 @@ def _same(ours: Any, theirs: Any) -> bool:
 
 def _compile_both(folder: Path, name: str) -> tuple[mujoco.MjModel, mujoco.MjModel, PartModel]:
     (folder / "cube.obj").write_text(CUBE_OBJ)
+    (folder / "sleeve.skn").write_bytes(SLEEVE_SKN)
     (folder / "robot.xml").write_text(robot_mjcf(name))
     (folder / "robot.yaml").write_text(
         "name: Case\nmjcf: robot.xml\njoint_defaults: {frictionloss: null, damping: null, armature: null}\n"
@@ -139,7 +140,7 @@ def test_every_name_is_the_files_name_with_the_robot_prefix(tmp_path: Path, name
             assert mujoco.mj_id2name(ours, kind, index) == expected, (kind, index)
 
 
-@pytest.mark.parametrize("name", ["meshes", "materials-and-textures", "skin", "height-field-on-the-root"])
+@pytest.mark.parametrize("name", ["meshes", "skin-from-a-file"])
 def test_every_asset_path_names_the_same_file(tmp_path: Path, name: str) -> None:
     ours, theirs, _ = _compile_both(tmp_path, name)
     for field, count in PATHS.items():

@@ -181,9 +181,7 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
-    probe = _parse(path, fixes)[1]
-    _absolutize_assets(probe, path.parent, homes)
-    check_as_mujoco(probe, shown, lines)  # what attaching would drop in silence, MuJoCo refuses here
+    check_as_mujoco(_parse(path, fixes)[1], spec, shown, lines)
     return MjcfSource(
         path=path,
         pristine=spec,
