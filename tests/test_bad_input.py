@@ -73,7 +73,7 @@ CASES = [
     pytest.param(ARM + b"init_qpos: [" + b"0, " * MAX_YAML_ITEMS + b"0]\n", [f"{{spec}}:3:12: init_qpos: a list of {MAX_YAML_ITEMS + 1} items exceeds the limit of {MAX_YAML_ITEMS} items"], id="huge-list"),
     pytest.param(ARM + b"description: " + b"x" * MAX_SPEC_BYTES + b"\n", [f"{{spec}}: the file's size exceeds the limit of {MAX_SPEC_BYTES} bytes for a spec file"], id="huge-file"),
     # what MuJoCo itself refuses is reported, not crashed on
-    pytest.param(b"name: Arm\nmjcf: negative_mass.xml\n", ["{spec}:1:1: robot 'Arm': MuJoCo cannot compile the assembly: mass, inertia or density are negative in geom Element name 'robot0_link2_col', id 3, line 23"], id="negative-mass-in-mjcf"),
+    pytest.param(b"name: Arm\nmjcf: negative_mass.xml\n", ["{spec}:2:7: mjcf: {folder}/negative_mass.xml:23: MuJoCo refuses it: mass, inertia or density are negative in geom (element 'link2_col'); correct the file (a spec can declare a repair: mjcf_fixes)"], id="negative-mass-in-mjcf"),
     pytest.param(b"name: Arm\nmjcf: missing.xml\n", ["{spec}:2:7: mjcf: MJCF file not found: {folder}/missing.xml"], id="missing-mjcf"),
 ]
 # fmt: on

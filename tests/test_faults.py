@@ -47,7 +47,7 @@ def test_a_build_that_fails_leaves_the_existing_output_intact(
     spec, out = _spec_folder(tmp_path) / "broken.yaml", _previous_output(tmp_path)
     assert main(["build", str(spec), "-o", str(out)]) == 1
     assert (
-        "MuJoCo cannot compile the assembly: mass, inertia or density are negative" in capsys.readouterr().err
+        "broken.xml:23: MuJoCo refuses it: mass, inertia or density are negative" in capsys.readouterr().err
     )
     assert out.read_text() == OLD
     assert os.listdir(out.parent) == ["robot.xml"]

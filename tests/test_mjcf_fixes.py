@@ -73,7 +73,8 @@ def test_without_repairs_mujoco_refuses_the_file_and_the_error_points_at_mjcf_fi
 ) -> None:
     with pytest.raises(
         MjcfError,
-        match=r"flawed.yaml:3:7: mjcf: .*unrecognized attribute: 'group' Element 'default', line 7.*\(a spec can declare a repair: mjcf_fixes\)",
+        match=r"flawed.yaml:3:7: mjcf: .*flawed.xml:7: MuJoCo cannot read it: Schema violation: unrecognized "
+        r"attribute: 'group'; correct the file \(a spec can declare a repair: mjcf_fixes\)$",
     ):
         _gripper(write, "").check()
 

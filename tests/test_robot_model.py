@@ -140,7 +140,9 @@ def test_mjcf_that_mujoco_rejects_is_reported_with_both_files(write) -> None:  #
     )
     spec = write("s/robot.yaml", "name: Bad\nmjcf: bad.xml\n")
     (cls,) = assembler.register_specs(spec)
-    with pytest.raises(MjcfError, match=r"robot.yaml:2:7: mjcf: .*bad.xml: MuJoCo cannot read it: .*hinj"):
+    with pytest.raises(
+        MjcfError, match=r"robot.yaml:2:7: mjcf: .*bad.xml:1: MuJoCo cannot read it: invalid keyword: 'hinj'"
+    ):
         cls(idn=0).check()
 
 

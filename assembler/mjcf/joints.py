@@ -6,6 +6,8 @@ value MJCF's attribute sets); ``armature`` and ``frictionloss`` stay scalars.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import mujoco
 import numpy as np
 
@@ -27,6 +29,11 @@ def set_joint_attribute_value(joint: mujoco.MjsJoint, attribute: str, value: flo
         setattr(joint, attribute, coefficients)
     else:
         setattr(joint, attribute, value)
+
+
+def free_joints(joints: Iterable[mujoco.MjsJoint]) -> int:
+    """How many of ``joints`` are free joints."""
+    return sum(joint.type == FREE for joint in joints)
 
 
 def named_joints(mjspec: mujoco.MjSpec) -> list[str]:

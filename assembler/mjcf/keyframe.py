@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError
+from assembler.mjcf import census
 
 HOME_KEY = "home"
 
@@ -81,6 +82,7 @@ def compile_with_home(spec: mujoco.MjSpec, home: Mapping[str, float], what: str)
     except ValueError as error:
         message = " ".join(str(error).split()).removeprefix("Error: ")
         raise MjcfError(f"{what}: MuJoCo cannot compile the assembly: {message}") from None
+    census.check_compiled(spec, model, what)
     index = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
     qpos = model.qpos0.copy()
     for name, value in home.items():

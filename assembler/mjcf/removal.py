@@ -14,6 +14,7 @@ from collections.abc import Iterable
 import mujoco
 
 FREE = mujoco.mjtJoint.mjJNT_FREE
+JOINT_TRANSMISSIONS = (mujoco.mjtTrn.mjTRN_JOINT, mujoco.mjtTrn.mjTRN_JOINTINPARENT)
 
 
 def _tendon_joints(tendon: mujoco.MjsTendon) -> set[str]:
@@ -32,7 +33,7 @@ def remove_joints(spec: mujoco.MjSpec, names: Iterable[str]) -> None:
     tendons = {t.name for t in spec.tendons if _tendon_joints(t) & joints}
     actuators = set()
     for actuator in list(spec.actuators):
-        on_joint = actuator.trntype == mujoco.mjtTrn.mjTRN_JOINT and actuator.target in joints
+        on_joint = actuator.trntype in JOINT_TRANSMISSIONS and actuator.target in joints
         on_tendon = actuator.trntype == mujoco.mjtTrn.mjTRN_TENDON and actuator.target in tendons
         if on_joint or on_tendon:
             actuators.add(actuator.name)

@@ -4,7 +4,9 @@ Each robot instance gets a cheap copy of the pristine spec. Asset paths are made
 ``meshdir``/``texturedir`` cleared) before anything is attached, because ``MjSpec.to_xml`` keeps only
 the outermost model's directories: without this the emitted XML would not load from another
 working directory. Every asset path must stay in the allowed folders (:func:`assembler.paths.confine`),
-and the file passes :mod:`assembler.mjcf.xml_guard` before any parser reads it.
+and the file passes :mod:`assembler.mjcf.xml_guard` before any parser reads it. Once read, the file
+is compiled on its own as MuJoCo would (:mod:`assembler.mjcf.file_check`): what MuJoCo refuses is
+refused here, with the file's line, rather than dropped by ``MjSpec.attach`` later.
 """
 
 from __future__ import annotations
@@ -21,8 +23,10 @@ from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
 from assembler.mjcf.authored import Authored, authored_attributes
+from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
 from assembler.mjcf.joints import named_joints
+from assembler.mjcf.refusal import LineMap, original_lines, refusal_line, repaired_lines, same_lines
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.schema.fixes import MjcfFix
@@ -110,23 +114,27 @@ def _unnamed_joints(spec: mujoco.MjSpec) -> list[str]:
     ]
 
 
-def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjSpec]:
-    """The file's XML tree and MjSpec, after its declared repairs."""
+def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjSpec, LineMap]:
+    """The file's XML tree and MjSpec, after its declared repairs, and the map from the lines
+    MuJoCo reports to the file's own."""
     shown = display_path(path)
+    lines: LineMap = same_lines
     try:
         root = ET.parse(path).getroot()
         if not fixes:
-            return root, mujoco.MjSpec.from_file(str(path))
+            return root, mujoco.MjSpec.from_file(str(path)), lines
+        original = original_lines(root, path.read_bytes())
         stale = apply_fixes(root, fixes)
         if stale:
             raise MjcfError([Problem(f"{shown}: {line}") for line in stale])
         # Parsed from text: asset paths stay relative and are resolved against the file's folder below.
-        return root, mujoco.MjSpec.from_string(ET.tostring(root, encoding="unicode"))
+        text = ET.tostring(root, encoding="unicode")
+        lines = repaired_lines(root, text, original)
+        return root, mujoco.MjSpec.from_string(text), lines
     except ET.ParseError as error:
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     except ValueError as error:
-        hint = " (a spec can declare a repair: mjcf_fixes)" if "XML Error" in str(error) else ""
-        raise MjcfError(f"{shown}: MuJoCo cannot read it: {' '.join(str(error).split())}{hint}") from None
+        raise MjcfError(refusal_line(str(error), shown, lines, "MuJoCo cannot read it")) from None
 
 
 def _stat(path: str) -> tuple[int, int] | None:
@@ -166,13 +174,15 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
             f"{shown}: mjcf_fixes cannot be used on a file that includes other files: the repaired text "
             "is parsed from memory, where MuJoCo would look for the included files in the working directory"
         )
-    root, spec = _parse(path, fixes)
+    root, spec, lines = _parse(path, fixes)
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
+    # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
+    check_as_mujoco(_parse(path, fixes)[1], spec, shown, lines)
     return MjcfSource(
         path=path,
         pristine=spec,

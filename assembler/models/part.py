@@ -20,7 +20,7 @@ from assembler.documents import LoadedSpec
 from assembler.documents.validation import reading_order
 from assembler.errors import Location, MjcfError, Problem, SpecError
 from assembler.fieldpath import FieldPath
-from assembler.mjcf import compose
+from assembler.mjcf import census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
@@ -160,6 +160,8 @@ class PartModel(metaclass=RegisteringMeta):
         assembly = compose.new_assembly(self.source.globals_xml)
         compose.attach_at_world(assembly, self.part_mjspec(), self.naming_prefix)
         self.complete_alone(assembly)
+        what = f"building {self.family} '{type(self).__name__}' alone"
+        census.require_at_least(census.of_spec(assembly), census.of_spec(self.prepared_mjspec), what)
         return compile_with_home(assembly, self.home_qpos(), self.describe())
 
     def complete_alone(self, assembly: mujoco.MjSpec) -> None:

@@ -19,7 +19,8 @@ from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.cache.service import Assembly, compile_model
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.fieldpath import FieldPath
-from assembler.mjcf import compose
+from assembler.mjcf import census, compose
+from assembler.mjcf.census import Census
 from assembler.mjcf.emit import to_xml, write_atomically
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import Keyframe, compile_with_home
@@ -69,6 +70,7 @@ class RobotModel(PartModel):
 
     def build_into(self, assembly: mujoco.MjSpec) -> None:
         """Attach this robot, its base and its grippers to ``assembly`` (used for scenes too)."""
+        before = census.of_spec(assembly)
         robot = self.part_mjspec()
         if self.base is None:
             compose.attach_at_world(assembly, robot, self.naming_prefix)
@@ -76,6 +78,20 @@ class RobotModel(PartModel):
             self.base.carry(assembly, robot, self.naming_prefix, self.base_offset - self.base.top_offset)
         self._attach_grippers(assembly)
         self._apply_placement(assembly)
+        grown = census.of_spec(assembly)
+        grown.subtract(before)  # nothing of the parts dropped in silence: a loss is a bug
+        census.require_at_least(grown, self.census_contribution(), f"building robot '{type(self).__name__}'")
+
+    def census_contribution(self) -> Census:
+        """How many elements of each kind building this robot with its base and grippers adds to an
+        assembly: every element of every part (as prepared: what the specs remove is gone), except
+        what the base's type changes."""
+        total = census.of_spec(self.prepared_mjspec)
+        if self.base is not None:
+            total.update(self.base.census_contribution(self.prepared_mjspec.worldbody.first_body()))
+        for gripper in getattr(self, "grippers", {}).values():
+            total.update(census.of_spec(gripper.prepared_mjspec))
+        return total
 
     def _attach_grippers(self, assembly: mujoco.MjSpec) -> None:
         """Seam for ManipulatorModel."""

@@ -10,6 +10,8 @@ import numpy as np
 
 from assembler.errors import Problem
 from assembler.fieldpath import FieldPath
+from assembler.mjcf import census
+from assembler.mjcf.census import Census
 from assembler.models.groups import robosuite_group
 from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
@@ -45,6 +47,11 @@ class RobotBaseModel(PartModel):
     def naming_prefix(self) -> str:
         """``fixed_mount{idn}_``, ``mobilebase{idn}_``, ``leg{idn}_`` or ``nullbase{idn}_``."""
         return f"{self.prefix_stem}{self.idn}_"
+
+    def census_contribution(self, robot_root: mujoco.MjsBody) -> Census:
+        """How many elements of each kind carrying a robot (whose root body is ``robot_root``) adds
+        to an assembly: all of this base's own, unless its type says otherwise."""
+        return census.of_spec(self.prepared_mjspec)
 
     def carry(
         self, assembly: mujoco.MjSpec, robot: mujoco.MjSpec, robot_prefix: str, offset: FloatArray

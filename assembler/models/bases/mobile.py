@@ -10,6 +10,8 @@ import mujoco
 from assembler.errors import Problem
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
+from assembler.mjcf.census import Census
+from assembler.mjcf.joints import free_joints
 from assembler.models.bases.base import RobotBaseModel
 from assembler.models.part import FloatArray
 from assembler.models.preparation import PreparedPart
@@ -22,6 +24,17 @@ class MobileBaseModel(RobotBaseModel):
     prefix_stem = "mobilebase"
     legged: ClassVar[bool] = False
     """A legged base also takes over the robot root's free joint and inertia."""
+
+    def census_contribution(self, robot_root: mujoco.MjsBody) -> Census:
+        """Its elements, an outer body that keeps the robot root's name, minus the robot root's free
+        joint; a legged base's free joints become the one free joint of that outer body."""
+        contribution: Census = super().census_contribution(robot_root)
+        contribution["bodies"] += 1
+        contribution["joints"] -= free_joints(robot_root.joints)
+        base_root = self.prepared_mjspec.worldbody.first_body()
+        if self.legged and free_joints(base_root.joints):
+            contribution["joints"] += 1 - free_joints(self.prepared_mjspec.joints)
+        return contribution
 
     def carry(
         self, assembly: mujoco.MjSpec, robot: mujoco.MjSpec, robot_prefix: str, offset: FloatArray

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from collections import Counter
+
 import mujoco
 
 from assembler.mjcf import compose
+from assembler.mjcf.census import Census
 from assembler.models.bases.base import RobotBaseModel
 from assembler.models.part import FloatArray
 
@@ -14,6 +17,10 @@ class NullBaseModel(RobotBaseModel):
 
     in_registry = False
     prefix_stem = "nullbase"
+
+    def census_contribution(self, robot_root: mujoco.MjsBody) -> Census:
+        """Its sites only."""
+        return Counter({"sites": len(self.prepared_mjspec.sites)})
 
     def carry(
         self, assembly: mujoco.MjSpec, robot: mujoco.MjSpec, robot_prefix: str, offset: FloatArray

@@ -1,0 +1,95 @@
+"""How many elements of each kind a spec or a compiled model holds, and the check that none is lost.
+
+MjSpec's ``attach`` drops what it cannot resolve without a word, so the assembler counts: after a
+build, the assembly holds at least the elements of its parts (each base type says what it
+contributes: ``RobotBaseModel.census_contribution``), and a compiled model holds
+as many as the spec it was compiled from. A shortfall is a bug in the assembler, not a user's
+mistake (every file is first checked as MuJoCo checks it: :mod:`assembler.mjcf.file_check`), so it
+raises :class:`ElementsLost`, which the CLI does not catch: it crashes loudly with a traceback.
+
+Keyframes are not counted: every part's keyframes are replaced by the assembly's one ``home``.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Mapping
+
+import mujoco
+
+KINDS: dict[str, str] = {
+    "bodies": "nbody",
+    "joints": "njnt",
+    "geoms": "ngeom",
+    "sites": "nsite",
+    "actuators": "nu",
+    "sensors": "nsensor",
+    "tendons": "ntendon",
+    "equalities": "neq",
+    "pairs": "npair",
+    "excludes": "nexclude",
+    "cameras": "ncam",
+    "lights": "nlight",
+    "materials": "nmat",
+    "meshes": "nmesh",
+    "textures": "ntex",
+    "hfields": "nhfield",
+    "skins": "nskin",
+    "flexes": "nflex",
+    "numerics": "nnumeric",
+    "texts": "ntext",
+    "tuples": "ntuple",
+}
+"""Each counted kind: its list on ``MjSpec`` -> its size on ``MjModel``."""
+
+DISCARDED_BY: dict[str, tuple[str, ...]] = {
+    "discardvisual": ("geoms", "meshes", "materials", "textures"),
+    "fusestatic": ("bodies",),
+}
+"""Compiler options with which MuJoCo's compile itself leaves elements of these kinds out."""
+
+Census = Counter[str]
+"""Kind -> number of elements."""
+
+
+class ElementsLost(RuntimeError):
+    """An assembly lost elements of its parts: a bug in the assembler (never a user's mistake)."""
+
+    def __init__(self, what: str, shortfall: Mapping[str, tuple[int, int]]) -> None:
+        details = ", ".join(f"{kind}: {have} of {want}" for kind, (have, want) in shortfall.items())
+        super().__init__(
+            f"internal error, a bug in robot-assembler (please report it with the spec): {what} "
+            f"lost elements of its parts ({details})"
+        )
+
+
+def of_spec(spec: mujoco.MjSpec) -> Census:
+    """The elements of ``spec`` per kind (the world body not counted)."""
+    census = Counter({kind: len(getattr(spec, kind)) for kind in KINDS})
+    census["bodies"] -= 1
+    return census
+
+
+def of_model(model: mujoco.MjModel) -> Census:
+    """The elements of a compiled model per kind (the world body not counted)."""
+    census = Counter({kind: int(getattr(model, size)) for kind, size in KINDS.items()})
+    census["bodies"] -= 1
+    return census
+
+
+def require_at_least(have: Census, want: Census, what: str, exempt: frozenset[str] = frozenset()) -> None:
+    """Raise :class:`ElementsLost` when ``have`` holds fewer elements of some kind than ``want``."""
+    shortfall = {
+        kind: (have[kind], want[kind]) for kind in KINDS if kind not in exempt and have[kind] < want[kind]
+    }
+    if shortfall:
+        raise ElementsLost(what, shortfall)
+
+
+def check_compiled(spec: mujoco.MjSpec, model: mujoco.MjModel, what: str) -> None:
+    """The compiled ``model`` holds every element of ``spec``, except those MuJoCo discards on the
+    spec's own request (``discardvisual``, ``fusestatic``)."""
+    exempt = frozenset(
+        kind for option, kinds in DISCARDED_BY.items() if getattr(spec.compiler, option) for kind in kinds
+    )
+    require_at_least(of_model(model), of_spec(spec), f"compiling {what}", exempt)
