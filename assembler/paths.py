@@ -127,6 +127,7 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
 
     Otherwise raises ``error`` with one line naming the path and how to allow it.
     """
+    refuse_nul(str(path), what, error)
     try:
         resolved = path.resolve()
         roots = [*(_resolved_folder(home) for home in homes), *trusted_folders()]
@@ -143,6 +144,13 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
     )
 
 
+def refuse_nul(text: str, what: str = "", error: type[AssemblerError] = SpecError) -> None:
+    """A path written with a NUL character (YAML's ``\\0``) names no file: one line, no traceback."""
+    if "\0" in text:
+        prefix = f"{what.strip().rstrip(':')}: " if what.strip() else ""
+        raise error(f"{prefix}a file path cannot contain a NUL character (\\0); remove it")
+
+
 def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     """Turn a spec's file reference into an absolute path or keep a ``package://`` reference.
 
@@ -151,6 +159,7 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     stay below that folder or a trusted one (:func:`confine`); :class:`SpecError` otherwise. A
     path that does not exist yet is checked when it is read (:func:`locate_model_file`).
     """
+    refuse_nul(reference)
     if reference.startswith(PACKAGE_SCHEME):
         return reference
     home = spec_dir or Path.cwd()
@@ -174,6 +183,7 @@ def locate_model_file(reference: str) -> Path:
 
     A ``package://`` path must stay inside its package's folder.
     """
+    refuse_nul(reference, error=MjcfError)
     if reference.startswith(PACKAGE_SCHEME):
         package, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
         if not package.isidentifier():  # find_spec("a.b") would import package a

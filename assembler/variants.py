@@ -27,8 +27,8 @@ from assembler.assembly import DEFAULT, assemble
 from assembler.catalog import check_override_paths, register_specs, with_overrides
 from assembler.documents import Override, parse_overrides, parse_path
 from assembler.errors import AssemblerError, Problem
-from assembler.mjcf.emit import write_atomically
 from assembler.registry import robot_class
+from assembler.writing import make_folder, write_atomically
 
 MANIFEST = "manifest.jsonl"
 
@@ -209,7 +209,7 @@ def write_variants(plan: VariantPlan, folder: str | Path, jobs: int | None = Non
         raise AssemblerError("--seed must be >= 0 and --jobs >= 1")
     plan.check()
     target = Path(folder)
-    target.mkdir(parents=True, exist_ok=True)
+    make_folder(target)
     work = [(plan, i, variant, target) for i, variant in enumerate(plan.variant_overrides())]
     workers = min(jobs or os.cpu_count() or 1, len(work))
     if workers <= 1:

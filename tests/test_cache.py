@@ -332,6 +332,30 @@ def test_a_truncated_model_file_is_a_miss_and_is_replaced(private_cache: Path) -
     assert not model_file.exists()
 
 
+def test_a_byte_changed_anywhere_in_an_entry_is_a_miss_never_a_wrong_model(private_cache: Path) -> None:
+    reference = fresh("Sparrow7")
+    load("Sparrow7")
+    (model_file,) = private_cache.glob("*.mjb")
+    pristine = model_file.read_bytes()
+    positions = sorted(
+        {0, 1, len(pristine) // 2, len(pristine) - 1, *range(7, len(pristine), len(pristine) // 61)}
+    )
+    for position in positions:
+        damaged = bytearray(pristine)
+        damaged[position] ^= 0x01  # the smallest change: one bit
+        for file in private_cache.glob("*.mjb"):
+            file.unlink()
+        model_file.write_bytes(bytes(damaged))
+        cache.service._recent.forget(str(private_cache))  # read from disk, not this process's memory
+        assert counted(lambda: load("Sparrow7")) == (0, 1, 0), position
+        assert not model_file.exists()  # the damaged entry is removed
+        (model_file,) = private_cache.glob("*.mjb")  # the compile stored a whole one again
+    assert len(positions) > 60
+    cache.service._recent.forget(str(private_cache))
+    assert counted(lambda: load("Sparrow7")) == (1, 0, 0)
+    assert_same_model(load("Sparrow7"), reference)
+
+
 def test_a_truncated_manifest_is_a_miss_and_is_removed(private_cache: Path) -> None:
     load("Sparrow7")
     (manifest,) = entries(private_cache)

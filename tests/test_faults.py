@@ -14,8 +14,8 @@ import mujoco
 import pytest
 
 import assembler
+from assembler import writing
 from assembler.cli import main
-from assembler.mjcf import emit
 from tests.conftest import TWO_LINK_MJCF
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
@@ -83,7 +83,7 @@ def test_a_failed_rename_keeps_the_old_file_and_leaves_no_temporary(
     def refuse(source: object, target: object) -> None:
         raise PermissionError(13, "Permission denied")
 
-    monkeypatch.setattr(emit.os, "replace", refuse)
+    monkeypatch.setattr(writing.os, "replace", refuse)
     assert main(["build", str(spec), "-o", str(out)]) == 1
     assert capsys.readouterr().err == f"cannot write {out}: Permission denied\n"
     assert out.read_text() == OLD
@@ -98,9 +98,9 @@ def test_ctrl_c_while_writing_keeps_the_old_file_and_leaves_no_temporary(
     def interrupt(descriptor: int) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(emit.os, "fsync", interrupt)
+    monkeypatch.setattr(writing.os, "fsync", interrupt)
     with pytest.raises(KeyboardInterrupt):
-        emit.write_atomically(out, "<mujoco/>")
+        writing.write_atomically(out, "<mujoco/>")
     assert out.read_text() == OLD
     assert os.listdir(out.parent) == ["robot.xml"]
 

@@ -13,13 +13,23 @@ import os
 from dataclasses import asdict, dataclass
 from typing import Any
 
+import xxhash
+
 from assembler.cache.dependencies import Dependency
 from assembler.cache.key import FORMAT
 
 MANIFEST_SUFFIX = ".json"
 MODEL_SUFFIX = ".mjb"
-PROBE_BYTES = 16
-"""Bytes kept from each end of the model file: a file cut short or zero-filled fails the check."""
+DIGEST = "xxh3_128"
+"""The hash of a model file's whole content, checked on every load from disk. XXH3 rather than a
+cryptographic hash: it is there to catch a damaged file (any change of any byte), not a forger (a
+writer of the cache folder could write any model), and it hashes a 44 MB model in a few
+milliseconds where BLAKE2b takes 20 times longer, on the path timed against MuJoCo's own load."""
+
+
+def content_digest(data: object) -> str:
+    """The :data:`DIGEST` of a buffer (bytes, a memory map, a numpy array), in hex."""
+    return xxhash.xxh3_128(data).hexdigest()  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True)
@@ -35,11 +45,8 @@ class Entry:
     model_bytes: int
     """Exact size of the model file."""
 
-    head: str
-    """Hex of the model file's first bytes."""
-
-    tail: str
-    """Hex of the model file's last bytes."""
+    digest: str
+    """The :data:`DIGEST` of the model file's whole content."""
 
     label: str
     """What was compiled, for people reading the folder (e.g. ``Panda0``)."""
@@ -71,6 +78,6 @@ class Entry:
         except (KeyError, TypeError, AttributeError) as error:
             raise ValueError(f"not a manifest: {error}") from None
         named_file = entry.model.endswith(MODEL_SUFFIX) and os.sep not in entry.model
-        if not named_file or entry.model_bytes < 2 * PROBE_BYTES:
+        if not named_file or entry.model_bytes <= 0:
             raise ValueError("not a manifest: bad model file")
         return entry

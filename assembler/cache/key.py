@@ -20,7 +20,7 @@ import mujoco
 from assembler.cache.inputs import BuildInputs
 from assembler.version import __version__
 
-FORMAT = 2
+FORMAT = 3
 """Version of the entry layout and of the key's contents; bump it when either changes."""
 
 _PACKAGE = Path(__file__).resolve().parent.parent

@@ -8,12 +8,14 @@ removed by a later clean-up once it is old. A lookup touches the manifest, so it
 time is the entry's last use, and eviction (after each write) drops the least recently used
 entries until the folder fits the limit. Two processes filling one entry each write their own
 model file and the last manifest wins; the other model file becomes an orphan and is removed.
-Anything unreadable (a truncated manifest or model) is a miss and is removed, never an error.
+Anything unreadable (a truncated manifest, a model file whose size or content digest differs from
+its manifest's) is a miss and is removed, never an error and never a wrong model.
 """
 
 from __future__ import annotations
 
 import contextlib
+import mmap
 import os
 import re
 import secrets
@@ -28,7 +30,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.dependencies import Dependency, Recorder, verify
-from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, PROBE_BYTES, Entry
+from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, Entry, content_digest
+from assembler.mjcf import mujoco_warnings
 
 TEMP_SUFFIX = ".tmp"
 GRACE_SECONDS = 600.0
@@ -87,16 +90,19 @@ class ModelStore:
         return entry if entry.key == key else None
 
     def _open_model(self, entry: Entry) -> mujoco.MjModel | None:
+        """The entry's model, if its file is whole: its exact size and content digest, and MuJoCo
+        loads it without a warning. MuJoCo never sees a file whose digest differs."""
         path = self.directory / entry.model
         try:
             with open(path, "rb") as stream:
                 if os.fstat(stream.fileno()).st_size != entry.model_bytes:
                     return None
-                head = stream.read(PROBE_BYTES).hex()
-                stream.seek(-PROBE_BYTES, os.SEEK_END)
-                if head != entry.head or stream.read(PROBE_BYTES).hex() != entry.tail:
-                    return None
-                return mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
+                with mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ) as content:
+                    if content_digest(content) != entry.digest:
+                        return None
+                with mujoco_warnings.collected() as warned:
+                    model = mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
+                return None if warned else model
         except (OSError, ValueError):
             return None
 
@@ -160,8 +166,7 @@ class ModelStore:
             key=key,
             model=f"{key}-{secrets.token_hex(6)}{MODEL_SUFFIX}",
             model_bytes=buffer.size,
-            head=buffer[:PROBE_BYTES].tobytes().hex(),
-            tail=buffer[-PROBE_BYTES:].tobytes().hex(),
+            digest=content_digest(buffer),
             label=label,
             dependencies=(),
         )

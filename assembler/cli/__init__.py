@@ -8,7 +8,6 @@ traceback), 2 a usage error (argparse's own).
 from __future__ import annotations
 
 import argparse
-import sys
 from collections.abc import Sequence
 
 from assembler.catalog import add_spec_folders
@@ -26,7 +25,7 @@ from assembler.cli import (
     validate,
     variants,
 )
-from assembler.errors import AssemblerError
+from assembler.cli.endings import end_cleanly
 from assembler.paths import allowing
 
 COMMANDS = (listing, validate, lint, build, scene, experiment, variants, inspect, schema, diff, render, cache)
@@ -77,12 +76,12 @@ def parse(argv: Sequence[str] | None = None) -> argparse.Namespace:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = parse(argv)
-    try:
+    """The ``assembler`` command; returns its exit code (see :mod:`assembler.cli.endings`)."""
+
+    def command() -> int:
+        args = parse(argv)
         with allowing(args.allow_path):
             add_spec_folders(args.specs)
             return int(args.run(args))
-    except AssemblerError as error:
-        for problem in error.problems:
-            print(str(problem), file=sys.stderr)
-        return 1
+
+    return end_cleanly(command)

@@ -14,9 +14,9 @@ from pathlib import Path
 
 from assembler.catalog import applied_overrides
 from assembler.experiment import load_experiment
-from assembler.mjcf.emit import write_atomically
 from assembler.models import RobotModel
 from assembler.paths import display_path
+from assembler.writing import write_atomically
 
 
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

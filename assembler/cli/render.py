@@ -7,10 +7,10 @@ import sys
 from pathlib import Path
 
 from assembler.cli.common import add_assembly_arguments, assembled
-from assembler.mjcf.emit import write_atomically
 from assembler.paths import display_path
 from assembler.render import LABELS, VIEWS, encode_png, render_robot
 from assembler.render.picture import check_views
+from assembler.writing import write_atomically
 
 MAX_SIDE = 8192
 """Largest view width or height accepted (MuJoCo allocates an offscreen buffer of that size)."""

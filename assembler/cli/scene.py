@@ -6,9 +6,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.mjcf.emit import to_xml, write_atomically
+from assembler.mjcf.emit import to_xml
 from assembler.paths import display_path
 from assembler.scene import load_scene
+from assembler.writing import write_atomically
 
 
 def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

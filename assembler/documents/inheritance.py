@@ -74,7 +74,9 @@ def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
     overlay(data, child.data, TOP)
     if TOP in child.fields:
         fields[TOP] = child.fields[TOP]
-    return LocatedDocument(data=data, file=child.file, folder=child.folder, fields=fields, values=values)
+    return LocatedDocument(
+        data=data, file=child.file, folder=child.folder, path=child.path, fields=fields, values=values
+    )
 
 
 def is_file_reference(reference: object) -> bool:
@@ -82,8 +84,17 @@ def is_file_reference(reference: object) -> bool:
     return isinstance(reference, str) and (reference.endswith(SPEC_SUFFIXES) or "/" in reference)
 
 
+MAX_EXTENDS_DEPTH = 64
+"""Longest chain of parents a spec may have: inheritance is a few levels deep."""
+
+
 class Resolver:
-    """Resolves ``extends`` chains within a batch of documents and the registry, once each."""
+    """Resolves ``extends`` chains within a batch of documents and the registry, once each.
+
+    A chain is walked iteratively (no recursion, whatever its length); each document is known by
+    its file (or its name when it has no file), so a cycle is found however it is written: by
+    names, by file paths, or both.
+    """
 
     def __init__(
         self,
@@ -97,41 +108,37 @@ class Resolver:
         self.read = read
         self.done: dict[int, LocatedDocument] = {}
 
-    def resolve(self, document: LocatedDocument, chain: tuple[str, ...] = ()) -> LocatedDocument:
+    def resolve(self, document: LocatedDocument) -> LocatedDocument:
         """``document`` with its parents' fields merged in (itself when it extends nothing)."""
-        if id(document) in self.done:
-            return self.done[id(document)]
-        reference = document.data.get("extends")
-        if reference is None:
-            return document
-        where = document.where(EXTENDS)
-        if not isinstance(reference, str) or not reference:
-            raise SpecError(Problem("expected a spec name or a spec file path", where, EXTENDS))
-        key = self._key(reference, document, where)
-        own = str(document.data.get("name") or document.file)
-        if key in chain or key == own:
-            members = [*chain[chain.index(key) :], own] if key in chain else [own]
-            start = members.index(min(members))  # one spelling per cycle, whichever file finds it
-            members = members[start:] + members[:start]
-            cycle = " -> ".join([*members, members[0]])
-            raise SpecError(Problem(f"inheritance cycle: {cycle}; break it", where, EXTENDS))
-        parent = self._parent(reference, key, where, document)
-        merged = merge(self.resolve(parent, (*chain, own)), document)
-        self.done[id(document)] = merged
+        chain = [document]  # the document, its parent, its grandparent, ...
+        while id(chain[-1]) not in self.done and chain[-1].data.get("extends") is not None:
+            parent = self._parent(chain[-1])
+            identities = [_identity(member) for member in chain]
+            if _identity(parent) in identities:
+                cycle = chain[identities.index(_identity(parent)) :]
+                raise SpecError(Problem(_cycle_text(cycle), chain[-1].where(EXTENDS), EXTENDS))
+            if len(chain) > MAX_EXTENDS_DEPTH:
+                message = (
+                    f"more than {MAX_EXTENDS_DEPTH} levels of extends; a spec inherits from a few parents"
+                )
+                raise SpecError(Problem(message, chain[-1].where(EXTENDS), EXTENDS))
+            chain.append(parent)
+        merged = self.done.get(id(chain[-1]), chain[-1])
+        for child in reversed(chain[:-1]):
+            merged = merge(merged, child)
+            self.done[id(child)] = merged
         return merged
 
-    def _key(self, reference: str, document: LocatedDocument, where: Location) -> str:
-        """The parent's identity: an absolute file path, or a spec name."""
-        if not is_file_reference(reference):
-            return reference
-        try:
-            return str(Path(resolve_model_path(reference, document.folder)))
-        except SpecError as error:  # a parent file outside the allowed folders
-            raise SpecError([Problem(p.message, where, EXTENDS) for p in error.problems]) from None
-
-    def _parent(self, reference: str, key: str, where: Location, child: LocatedDocument) -> LocatedDocument:
-        if key != reference:  # a file
-            path = Path(key)
+    def _parent(self, child: LocatedDocument) -> LocatedDocument:
+        reference = child.data.get("extends")
+        where = child.where(EXTENDS)
+        if not isinstance(reference, str) or not reference:
+            raise SpecError(Problem("expected a spec name or a spec file path", where, EXTENDS))
+        if is_file_reference(reference):
+            try:
+                path = Path(resolve_model_path(reference, child.folder))
+            except SpecError as error:  # a parent file outside the allowed folders
+                raise SpecError([Problem(p.message, where, EXTENDS) for p in error.problems]) from None
             if not path.is_file():
                 raise SpecError(Problem(f"parent spec file not found: {display_path(path)}", where, EXTENDS))
             return self.read(path)
@@ -159,3 +166,23 @@ class Resolver:
         if suggestion:
             return f"unknown {kind} spec '{reference}'.{suggestion}"
         return f"unknown {kind} spec '{reference}'. Known {kind}s: {summarize_names(known, limit=20)}"
+
+
+def _identity(document: LocatedDocument) -> str:
+    """What makes a document itself: its file, or (written as text) its name."""
+    if document.path is not None:
+        return str(document.path)
+    return f"name:{document.data.get('name')!r}"
+
+
+def _label(document: LocatedDocument) -> str:
+    name = document.data.get("name")
+    return name if isinstance(name, str) else document.file
+
+
+def _cycle_text(cycle: list[LocatedDocument]) -> str:
+    """``inheritance cycle: A -> B -> A; break it``, one spelling whichever member finds it."""
+    members = [_label(member) for member in cycle]
+    start = members.index(min(members))
+    members = members[start:] + members[:start]
+    return f"inheritance cycle: {' -> '.join([*members, members[0]])}; break it"

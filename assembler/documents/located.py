@@ -26,6 +26,9 @@ class LocatedDocument:
     folder: Path | None = None
     """The folder relative file references in the document are taken from (None: the working directory)."""
 
+    path: Path | None = None
+    """The file the document was read from, resolved (None for text given directly)."""
+
     fields: dict[FieldPath, Location] = field(default_factory=dict)
     """Where each field is written: a mapping entry's key, a list item's value, the document's start."""
 

@@ -144,7 +144,12 @@ def apply_overrides(
     if problems:
         raise SpecError(problems)
     return LocatedDocument(
-        data=data, file=document.file, folder=document.folder, fields=fields, values=values
+        data=data,
+        file=document.file,
+        folder=document.folder,
+        path=document.path,
+        fields=fields,
+        values=values,
     )
 
 

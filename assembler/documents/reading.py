@@ -45,6 +45,7 @@ def read_document(path: Path) -> LocatedDocument:
     """A spec file's YAML with positions, its file references made absolute."""
     shown = display_path(path)
     document = parse_yaml(read_yaml_text(path, shown), shown, path.parent.resolve())
+    document.path = path.resolve()
     resolve_path_fields(document)
     return document
 

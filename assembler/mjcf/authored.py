@@ -15,6 +15,7 @@ from collections.abc import Mapping
 
 import mujoco
 
+from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.joints import joint_attribute
 
 SENTINEL = -7.251e33
@@ -53,7 +54,8 @@ def authored_attributes(
         if attribute not in in_main:
             main_joint.set(attribute, repr(SENTINEL))
     probe_xml = ET.tostring(probe_root, encoding="unicode")
-    probe = mujoco.MjSpec.from_string(probe_xml, include=dict(included or {}))
+    with mujoco_warnings.collected():  # the file's own parse has shown them
+        probe = mujoco.MjSpec.from_string(probe_xml, include=dict(included or {}))
 
     literal = {
         element.get("name"): element.attrib

@@ -1,8 +1,6 @@
-"""Write emitted MJCF to disk: atomically, and optionally as a self-contained bundle with its assets.
-
-A failed build must never leave a partial file or clobber the user's previous output, so every
-file is written to a temporary file in the target folder and moved into place with one rename.
-A bundle writes only inside its folder: asset names from the MJCF are reduced to plain names.
+"""Emitted MJCF: text precise enough to reload the same model, and a self-contained bundle with
+its assets (written atomically, :mod:`assembler.writing`). A bundle writes only inside its folder:
+asset names from the MJCF are reduced to plain names.
 """
 
 from __future__ import annotations
@@ -11,10 +9,7 @@ import contextlib
 import ctypes
 import functools
 import hashlib
-import os
 import re
-import shutil
-import tempfile
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
@@ -23,6 +18,7 @@ import mujoco
 
 from assembler.errors import AssemblerError
 from assembler.paths import display_path
+from assembler.writing import copy_atomically, make_folder, write_atomically
 
 XML_SIGNIFICANT_DIGITS = 15
 """Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""
@@ -67,69 +63,6 @@ def to_xml(spec: mujoco.MjSpec) -> str:
         return str(spec.to_xml())
 
 
-def _current_umask() -> int:
-    mask = os.umask(0o022)  # reading the umask means setting it; put it back at once
-    os.umask(mask)
-    return mask
-
-
-def _mode_for(path: Path) -> int:
-    """An overwritten file keeps its permissions; a new one gets what ``open()`` would give it."""
-    try:
-        return path.stat().st_mode & 0o777
-    except FileNotFoundError:
-        return 0o666 & ~_current_umask()
-
-
-def write_atomically(path: Path, content: str | bytes) -> None:
-    """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half.
-
-    A file system error (no permission, disk full, a folder in the way) is an
-    :class:`AssemblerError` naming the path; the old file, if any, is left as it was.
-    """
-    data = content.encode() if isinstance(content, str) else content
-    with _cannot_write(path):
-        _write_replacing(path, data)
-
-
-@contextlib.contextmanager
-def _cannot_write(path: Path) -> Iterator[None]:
-    try:
-        yield
-    except OSError as error:
-        reason = error.strerror or str(error)
-        if isinstance(error, (FileExistsError, NotADirectoryError)):  # mkdir where a file is
-            reason = "a folder on its path is a file"
-        raise AssemblerError(f"cannot write {display_path(path)}: {reason}") from None
-
-
-def _write_replacing(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-
-
-def _copy_atomically(source: Path, target: Path) -> None:
-    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    try:
-        os.fchmod(handle, _mode_for(target))
-        os.close(handle)
-        shutil.copyfile(source, temporary)
-        os.replace(temporary, target)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-
-
 def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
@@ -168,8 +101,7 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
         raise AssemblerError(f"bundle: expected a file name for the XML, got '{xml_name}'")
     root = ET.fromstring(to_xml(spec))
     assets = directory / "assets"
-    with _cannot_write(assets):
-        assets.mkdir(parents=True, exist_ok=True)
+    make_folder(assets)
     if not assets.resolve().is_relative_to(directory.resolve()):  # a link planted in the folder
         raise AssemblerError(f"{display_path(assets)} leads out of {display_path(directory)}; remove it")
     placed: dict[str, str] = {}  # absolute source -> relative target
@@ -186,8 +118,7 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
             n += 1
             name = f"{stem}_{n}{suffix}"
         if name not in taken:
-            with _cannot_write(assets / name):
-                _copy_atomically(source, assets / name)
+            copy_atomically(source, assets / name)
             taken[name] = digest
         placed[file] = f"assets/{name}"
         return placed[file]

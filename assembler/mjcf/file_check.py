@@ -31,6 +31,7 @@ from __future__ import annotations
 import mujoco
 
 from assembler.errors import MjcfError
+from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.refusal import LineMap, refusal_line
 
 TETRAHEDRON: tuple[float, ...] = (0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)
@@ -78,6 +79,8 @@ def check_as_mujoco(probe: mujoco.MjSpec, resolved: mujoco.MjSpec, shown: str, l
     probe.compiler.boundmass = max(probe.compiler.boundmass, MASS_FLOOR)
     probe.compiler.boundinertia = max(probe.compiler.boundinertia, MASS_FLOOR)
     try:
-        probe.compile()
+        # Its warnings are about stand-ins, or come again from the part's real compile: not shown.
+        with mujoco_warnings.collected():
+            probe.compile()
     except ValueError as error:
         raise MjcfError(refusal_line(str(error), shown, lines, "MuJoCo refuses it")) from None

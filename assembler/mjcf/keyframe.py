@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError
-from assembler.mjcf import census
+from assembler.mjcf import census, mujoco_warnings
 
 HOME_KEY = "home"
 
@@ -78,7 +78,8 @@ def compile_with_home(spec: mujoco.MjSpec, home: Mapping[str, float], what: str)
     """Compile ``spec`` with a ``home`` keyframe at the given joint positions (others at qpos0)."""
     key = _home_key(spec)
     try:
-        model = spec.compile()
+        with mujoco_warnings.warned(what):
+            model = spec.compile()
     except ValueError as error:
         message = " ".join(str(error).split()).removeprefix("Error: ")
         raise MjcfError(f"{what}: MuJoCo cannot compile the assembly: {message}") from None

@@ -22,6 +22,7 @@ import mujoco
 from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
+from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
@@ -122,7 +123,8 @@ def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjS
     try:
         root = ET.parse(path).getroot()
         if not fixes:
-            return root, mujoco.MjSpec.from_file(str(path)), lines
+            with mujoco_warnings.warned(shown):
+                return root, mujoco.MjSpec.from_file(str(path)), lines
         original = original_lines(root, path.read_bytes())
         stale = apply_fixes(root, fixes)
         if stale:
@@ -130,7 +132,8 @@ def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjS
         # Parsed from text: asset paths stay relative and are resolved against the file's folder below.
         text = ET.tostring(root, encoding="unicode")
         lines = repaired_lines(root, text, original)
-        return root, mujoco.MjSpec.from_string(text), lines
+        with mujoco_warnings.warned(shown):
+            return root, mujoco.MjSpec.from_string(text), lines
     except ET.ParseError as error:
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     except ValueError as error:

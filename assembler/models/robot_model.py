@@ -21,7 +21,7 @@ from assembler.errors import AssemblerError, JointAttributeError, Problem, summa
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
-from assembler.mjcf.emit import to_xml, write_atomically
+from assembler.mjcf.emit import to_xml
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import Keyframe, compile_with_home
 from assembler.models.bases import RobotBaseModel
@@ -31,6 +31,7 @@ from assembler.models.preparation import SETTABLE_JOINT_ATTRIBUTES, PreparedPart
 from assembler.models.provenance import API
 from assembler.models.registering import Registry
 from assembler.schema import RobotSpec
+from assembler.writing import write_atomically
 
 REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
 """Every registered robot class by name, in registration order."""

@@ -1,0 +1,80 @@
+"""How a command ends, whatever happens: one line and the right exit code, never a traceback.
+
+- a problem in the user's input (:class:`AssemblerError`): one line per problem, exit 1;
+- Ctrl-C: ``interrupted``, exit 130 (128 + SIGINT, as shells report it);
+- standard output closed early (``assembler list | head -1``): silent, exit 141 (128 + SIGPIPE), as
+  ``git`` and ``cat`` end; the reader has what it wanted;
+- standard output cannot be written (``> /dev/full``): one line naming the reason, exit 1;
+- a MuJoCo warning: one line ``warning: ...`` on standard error, the command goes on.
+
+Anything else is a bug in the assembler and is allowed to crash with its traceback.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import sys
+import warnings
+from collections.abc import Callable
+from typing import TextIO
+
+from assembler.errors import AssemblerError
+from assembler.mjcf.mujoco_warnings import MujocoWarning
+
+INTERRUPTED = 130
+BROKEN_PIPE = 141
+
+
+def _print_warning(
+    message: Warning | str,
+    category: type[Warning],
+    filename: str,
+    lineno: int,
+    file: TextIO | None = None,
+    line: str | None = None,
+) -> None:
+    print(f"warning: {message}", file=sys.stderr)
+
+
+def _silence_stdout() -> None:
+    """Point standard output at /dev/null, so the interpreter's final flush cannot fail again."""
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, sys.stdout.fileno())
+    os.close(null)
+
+
+def end_cleanly(command: Callable[[], int]) -> int:
+    """Run ``command`` and turn every way it can end into an exit code and at most one line per problem."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("always", MujocoWarning)
+            warnings.showwarning = _print_warning  # restored by catch_warnings
+            code = command()
+            sys.stdout.flush()  # a closed or full stdout shows here, not in the interpreter's exit
+            return code
+    except AssemblerError as error:
+        for problem in error.problems:
+            print(str(problem), file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return INTERRUPTED
+    except BrokenPipeError:
+        _silence_stdout()
+        return BROKEN_PIPE
+    except OSError as error:
+        if _is_stdout(error):
+            _silence_stdout()
+            print(f"cannot write to standard output: {error.strerror}", file=sys.stderr)
+            return 1
+        raise
+
+
+OUTPUT_ERRORS = frozenset({errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT})
+"""Errors of writing a stream: the files the assembler writes itself report their own path."""
+
+
+def _is_stdout(error: OSError) -> bool:
+    """True when ``error`` came from writing standard output (it names no file)."""
+    return error.filename is None and error.errno in OUTPUT_ERRORS

@@ -1,0 +1,155 @@
+"""Every way a command can end badly ends with at most one line per problem and the right exit code,
+never a traceback: closed pipes, full disks, Ctrl-C, impossible paths, cycles of extends at any
+depth, NUL characters in paths. Commands run in new processes, as a user runs them."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from assembler.cli import main
+from tests.conftest import TWO_LINK_MJCF
+
+CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+"""The ``assembler`` command, run by this Python in a new process."""
+
+
+def _run(*argv: str, cwd: Path, stdout: int | None = subprocess.PIPE) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-c", CLI, *argv], cwd=cwd, stdout=stdout, stderr=subprocess.PIPE, text=True
+    )
+
+
+def test_a_closed_pipe_ends_silently_with_141(tmp_path: Path) -> None:
+    # `assembler list | head -1`: the reader closes the pipe after one line.
+    reader, writer = os.pipe()
+    command = subprocess.Popen(
+        [sys.executable, "-c", CLI, "list", "bases"], stdout=writer, stderr=subprocess.PIPE, text=True
+    )
+    os.close(writer)
+    with os.fdopen(reader) as head:
+        first = head.readline()
+    _, err = command.communicate(timeout=120)
+    assert first.startswith("base")
+    assert (command.returncode, err) == (141, "")
+
+
+def test_a_full_standard_output_is_one_line(tmp_path: Path) -> None:
+    with open("/dev/full", "w") as full:
+        done = subprocess.run(
+            [sys.executable, "-c", CLI, "build", "Sparrow7"], stdout=full, stderr=subprocess.PIPE, text=True
+        )
+    assert (done.returncode, done.stderr) == (1, "cannot write to standard output: No space left on device\n")
+
+
+@pytest.mark.parametrize("after", [0.05, 0.5, 1.5])
+def test_ctrl_c_at_any_moment_is_one_line_and_130(after: float, tmp_path: Path) -> None:
+    command = subprocess.Popen(
+        [sys.executable, "-c", CLI, "build", "Sparrow7", "--no-cache", "-o", "out.xml"],
+        cwd=tmp_path,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    time.sleep(after)  # while Python starts, while the package is imported, while it builds
+    command.send_signal(signal.SIGINT)
+    _, err = command.communicate(timeout=120)
+    if command.returncode == 0:
+        pytest.skip("the build finished before the signal arrived")
+    assert (command.returncode, err) == (130, "interrupted\n")
+    assert not any(name.endswith(".tmp") for name in os.listdir(tmp_path))
+
+
+def test_a_legal_long_file_name_is_written(tmp_path: Path) -> None:
+    name = "a" * 246 + ".xml"  # 250 characters: legal, but not with a temporary name around it
+    done = _run("build", "Sparrow7", "-o", name, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert os.listdir(tmp_path) == [name]
+
+
+def test_a_path_past_the_systems_limit_is_one_short_line(tmp_path: Path) -> None:
+    done = _run("build", "Sparrow7", "-o", "d/" * 2100 + "x.xml", cwd=tmp_path)
+    (line,) = done.stderr.splitlines()
+    assert done.returncode == 1 and line.endswith(": File name too long")
+    assert "...(4205 characters)..." in line and len(line) < 300
+
+
+def test_variants_into_a_folder_that_cannot_exist_is_one_line(tmp_path: Path) -> None:
+    done = _run(
+        "variants", "Sparrow7", "--grid", "joint_defaults.damping=0.1,0.2", "-o", "/proc/no", cwd=tmp_path
+    )
+    assert (done.returncode, done.stderr) == (1, "cannot write /proc/no: No such file or directory\n")
+
+
+def _chain(folder: Path, length: int, back_to: int | None) -> Path:
+    """Spec files c0 -> c1 -> ... -> c{length-1}, the last extending c{back_to} (or nothing)."""
+    folder.mkdir()
+    (folder / "twolink.xml").write_text(TWO_LINK_MJCF)
+    for index in range(length):
+        text = f"name: C{index}\n" + ("mjcf: twolink.xml\n" if index == 0 else "")
+        if index < length - 1:
+            text += f"extends: c{index + 1}.yaml\n"
+        elif back_to is not None:
+            text += f"extends: c{back_to}.yaml\n"
+        (folder / f"c{index}.yaml").write_text(text)
+    return folder / "c0.yaml"
+
+
+@pytest.mark.parametrize("length", [1, 2, 40])
+def test_a_cycle_of_extends_through_files_is_named_once(
+    length: int, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    first = _chain(tmp_path / "specs", length, back_to=0)
+    assert main(["validate", str(first)]) == 1
+    (line,) = capsys.readouterr().err.splitlines()
+    cycle = " -> ".join(f"C{index}" for index in sorted(range(length), key=str)) if length < 10 else ""
+    assert line.endswith("; break it") and "inheritance cycle: C0 -> " in line
+    if cycle:
+        assert f"inheritance cycle: {cycle} -> C0; break it" in line
+
+
+def test_a_chain_of_extends_deeper_than_the_limit_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    first = _chain(tmp_path / "specs", 300, back_to=None)
+    assert main(["validate", str(first)]) == 1
+    (line,) = capsys.readouterr().err.splitlines()
+    assert line.endswith("extends: more than 64 levels of extends; a spec inherits from a few parents")
+
+
+@pytest.mark.parametrize(
+    ("field", "text"),
+    [
+        ("mjcf", 'name: N\nmjcf: "arm\\0.xml"\n'),
+        ("extends", 'name: N\nextends: "arm\\0.yaml"\n'),
+    ],
+)
+def test_a_nul_written_in_a_path_field_is_a_positioned_line(
+    field: str, text: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    spec = tmp_path / "nul.yaml"
+    spec.write_text(text)
+    assert main(["validate", str(spec)]) == 1
+    assert capsys.readouterr().err == (
+        f"{spec}:2:{len(field) + 3}: {field}: a file path cannot contain a NUL character (\\0); remove it\n"
+    )
+
+
+def test_a_broken_cache_entry_never_writes_mujocos_log_into_the_working_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
+    assert _run("build", "Sparrow7", "-o", "a.xml", cwd=tmp_path).returncode == 0
+    (entry,) = (tmp_path / "cache").glob("*.mjb")
+    damaged = bytearray(entry.read_bytes())
+    damaged[len(damaged) // 3] ^= 0xFF
+    entry.write_bytes(bytes(damaged))
+    done = _run("build", "Sparrow7", "-o", "b.xml", cwd=tmp_path)
+    assert (done.returncode, done.stderr) == (0, "wrote b.xml\n")
+    assert (tmp_path / "a.xml").read_text() == (tmp_path / "b.xml").read_text()
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
