@@ -20,6 +20,7 @@ import mujoco
 from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
+from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.authored import authored_attributes
 from assembler.mjcf.fixes import apply_fixes
 from assembler.mjcf.xml_guard import check_mjcf
@@ -166,6 +167,8 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
             "is parsed from memory, where MuJoCo would look for the included files in the working directory"
         )
     root, spec = _parse(path, fixes)
+    included = _included_texts(path, read)
+    normalize_actuator_defaults(root, spec, included)  # MuJoCo < 3.16 leaks other shortcuts' gains
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
@@ -176,7 +179,7 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
         path=path,
         pristine=spec,
         globals_xml=_globals_xml(root),
-        authored=tuple(authored_attributes(root, spec, _included_texts(path, read))),
+        authored=tuple(authored_attributes(root, spec, included)),
         files=files,
     )
 
