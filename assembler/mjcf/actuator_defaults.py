@@ -29,6 +29,8 @@ from dataclasses import dataclass
 
 import mujoco
 
+from assembler.mjcf.versions import mujoco_at_least
+
 FIXED_IN: tuple[int, int] = (3, 16)
 """The first MuJoCo whose parser applies the rule itself; from it on this module does nothing."""
 
@@ -58,8 +60,7 @@ Element = tuple[str, tuple[tuple[str, str], ...]]
 
 def rule_is_native(version: str = mujoco.__version__) -> bool:
     """True when the installed MuJoCo already resolves actuator defaults by the 3.16 rule."""
-    major, minor = (int(part) for part in version.split(".")[:2])
-    return (major, minor) >= FIXED_IN
+    return mujoco_at_least(*FIXED_IN, version=version)
 
 
 def _reduced(element: ET.Element) -> Element:
