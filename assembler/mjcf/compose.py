@@ -16,6 +16,7 @@ import mujoco
 from numpy.typing import ArrayLike
 
 from assembler.errors import MjcfError, summarize_names
+from assembler.mjcf.attach_compat import prefix_what_attach_misses
 from assembler.mjcf.removal import remove_free_joints
 
 FREE = mujoco.mjtJoint.mjJNT_FREE
@@ -36,6 +37,7 @@ def attach(
     """
     part.option = assembly.option
     part.visual = assembly.visual
+    prefix_what_attach_misses(part, prefix)
     assembly.attach(part, frame=frame, prefix=prefix)
 
 

@@ -13,16 +13,32 @@ from collections.abc import Iterable
 
 import mujoco
 
+from assembler.mjcf.versions import mujoco_at_least
+
 FREE = mujoco.mjtJoint.mjJNT_FREE
 JOINT_TRANSMISSIONS = (mujoco.mjtTrn.mjTRN_JOINT, mujoco.mjtTrn.mjTRN_JOINTINPARENT)
 
 
-def _tendon_joints(tendon: mujoco.MjsTendon) -> set[str]:
-    names = set()
-    for wrap in tendon.path:
-        if wrap.type == mujoco.mjtWrap.mjWRAP_JOINT:
-            names.add(wrap.target.name)
-    return names
+def _tendon_joints(spec: mujoco.MjSpec) -> dict[str, set[str]]:
+    """Each tendon's joints by name (only fixed tendons have any)."""
+    if not spec.tendons:
+        return {}
+    if not mujoco_at_least(3, 11):
+        # Before MuJoCo 3.11 the wraps of a copied spec (every part's spec is a copy of the file's)
+        # have no target: reading wrap.target crashes the interpreter. The compiled model has them.
+        model = spec.compile()
+        return {
+            model.tendon(t).name: {
+                model.joint(model.wrap_objid[w]).name
+                for w in range(model.tendon_adr[t], model.tendon_adr[t] + model.tendon_num[t])
+                if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT
+            }
+            for t in range(model.ntendon)
+        }
+    return {
+        tendon.name: {w.target.name for w in tendon.path if w.type == mujoco.mjtWrap.mjWRAP_JOINT}
+        for tendon in spec.tendons
+    }
 
 
 def remove_joints(spec: mujoco.MjSpec, names: Iterable[str]) -> None:
@@ -30,7 +46,7 @@ def remove_joints(spec: mujoco.MjSpec, names: Iterable[str]) -> None:
     joints = set(names)
     if not joints:
         return
-    tendons = {t.name for t in spec.tendons if _tendon_joints(t) & joints}
+    tendons = {name for name, through in _tendon_joints(spec).items() if through & joints}
     actuators = set()
     for actuator in list(spec.actuators):
         on_joint = actuator.trntype in JOINT_TRANSMISSIONS and actuator.target in joints

@@ -23,6 +23,8 @@ from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
 from assembler.mjcf import mujoco_warnings
+from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
+from assembler.mjcf.attach_compat import refuse_unattachable
 from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
@@ -73,6 +75,16 @@ def _asset_file(directory: str, base: Path, file: str, homes: Collection[Path]) 
     return str(confine(path, homes, f"{display_path(base)}: asset file ", MjcfError))
 
 
+MESH_CONTENT_TYPES: dict[str, str] = {
+    ".stl": "model/stl",
+    ".obj": "model/obj",
+    ".msh": "model/vnd.mujoco.msh",
+}
+"""A mesh file's content type by its suffix, as MuJoCo 4's XML writer names it. Written into every
+mesh that does not say, so the emitted XML is the same whether or not MuJoCo decoded the file in
+this process (MuJoCo 3.9 writes the type only for meshes it has just decoded)."""
+
+
 def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path]) -> list[str]:
     """Rewrite every asset file path to an absolute one; return those that do not exist."""
     missing = []
@@ -83,6 +95,9 @@ def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path])
             element.file = _asset_file(directory, base, element.file, homes)
             if element.file and not os.path.isfile(element.file):
                 missing.append(element.file)
+    for mesh in spec.meshes:
+        if mesh.file and not mesh.content_type:
+            mesh.content_type = MESH_CONTENT_TYPES.get(Path(mesh.file).suffix.lower(), "")
     for texture in spec.textures:
         texture.file = _asset_file(texture_dir, base, texture.file, homes)
         texture.cubefiles = [_asset_file(texture_dir, base, f, homes) for f in texture.cubefiles]
@@ -178,6 +193,8 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
             "is parsed from memory, where MuJoCo would look for the included files in the working directory"
         )
     root, spec, lines = _parse(path, fixes)
+    included = _included_texts(path, read)
+    normalize_actuator_defaults(root, spec, included)  # MuJoCo < 3.16 leaks other shortcuts' gains
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
@@ -186,11 +203,12 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
     check_as_mujoco(_parse(path, fixes)[1], spec, shown, lines)
+    refuse_unattachable(spec, shown)
     return MjcfSource(
         path=path,
         pristine=spec,
         globals_xml=_globals_xml(root),
-        authored=tuple(authored_attributes(root, spec, _included_texts(path, read))),
+        authored=tuple(authored_attributes(root, spec, included)),
         files=files,
     )
 

@@ -1,0 +1,47 @@
+"""What ``MjSpec.attach`` misses on the older MuJoCo releases we support, put right or refused.
+
+Each rule names the release that fixed MuJoCo's behaviour; on that release and later it does
+nothing. Before 3.16, attaching a part with a prefix left its tendons' material references and its
+skins' names unprefixed (the compile then fails, or names collide between parts). Before 3.17, the
+bones a skin *file* names are not prefixed either, and the file cannot be rewritten: such a part is
+refused when it is read, with what to do.
+"""
+
+from __future__ import annotations
+
+import mujoco
+
+from assembler.errors import MjcfError
+from assembler.mjcf.versions import mujoco_at_least
+from assembler.paths import display_path
+
+PREFIXES_TENDON_MATERIALS_AND_SKINS = (3, 16)
+PREFIXES_SKIN_FILE_BONES = (3, 17)
+
+
+def refuse_unattachable(part: mujoco.MjSpec, shown: str) -> None:
+    """A part MuJoCo's attach would break on this release: a skin whose bones come from its file."""
+    if mujoco_at_least(*PREFIXES_SKIN_FILE_BONES):
+        return
+    for skin in part.skins:
+        if skin.file:
+            release = ".".join(map(str, PREFIXES_SKIN_FILE_BONES))
+            raise MjcfError(
+                f"{shown}: skin '{skin.name}' reads its bones from {display_path(skin.file)}, which MuJoCo "
+                f"{mujoco.__version__} cannot rename when it attaches the part (fixed in {release}): "
+                f"write the skin's vertices and bones in the MJCF, or install mujoco>={release}"
+            )
+
+
+def prefix_what_attach_misses(part: mujoco.MjSpec, prefix: str) -> None:
+    """Give ``part``'s tendon materials and skin names the prefix before it is attached with it, on
+    releases whose attach leaves them as they are (an attached spec's elements cannot be edited
+    through the assembly afterwards: the attach is by reference)."""
+    if mujoco_at_least(*PREFIXES_TENDON_MATERIALS_AND_SKINS):
+        return
+    for tendon in part.tendons:
+        if tendon.material:
+            tendon.material = prefix + tendon.material
+    for skin in part.skins:
+        if skin.name:
+            skin.name = prefix + skin.name
