@@ -206,3 +206,6 @@ def with_overrides(cls: type[P], overrides: Overrides, label: str = "override ")
         "__qualname__": cls.__qualname__,
     }
     return type(cls.__name__, (cls,), namespace)
+
+
+load_shipped_specs()  # the registries always hold the shipped specs once the catalog is in use

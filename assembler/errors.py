@@ -73,6 +73,10 @@ class RegistryError(AssemblerError):
     """A name is unknown to a registry, or two definitions claim the same name."""
 
 
+class MujocoWarning(UserWarning):
+    """A warning MuJoCo gave while the assembler read or compiled a model."""
+
+
 class JointAttributeError(AssemblerError):
     """``set_joint_attribute`` got an unsupported attribute or the wrong number of values."""
 

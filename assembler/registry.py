@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from assembler.catalog import PARENTS  # the shipped specs are registered with the catalog
 from assembler.errors import RegistryError, did_you_mean, summarize_names
 from assembler.models import (
     REGISTERED_BASES,
@@ -24,6 +25,7 @@ from assembler.models import (
 )
 
 __all__ = [
+    "PARENTS",
     "REGISTERED_BASES",
     "REGISTERED_GRIPPERS",
     "REGISTERED_ROBOTS",

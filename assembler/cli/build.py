@@ -6,17 +6,9 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.cli.common import add_assembly_arguments, assembled, use_cache
+from assembler.cli.common import assembled, use_cache
 from assembler.mjcf.emit import bundle
 from assembler.paths import display_path
-
-
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("build", help="write a robot's standalone MJCF")
-    add_assembly_arguments(parser)
-    parser.add_argument("-o", "--output", help="output XML file (default: standard output)")
-    parser.add_argument("--bundle", metavar="DIR", help="write the XML and copies of its assets to DIR")
-    parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:

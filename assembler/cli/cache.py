@@ -10,12 +10,6 @@ from assembler.cli.common import table
 from assembler.paths import display_path
 
 
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("cache", help="show or empty the compiled-model cache")
-    parser.add_argument("action", choices=("info", "clear"), help="info: location and size; clear: empty it")
-    parser.set_defaults(run=run)
-
-
 def run(args: argparse.Namespace) -> int:
     store = default_store()
     if args.action == "clear":

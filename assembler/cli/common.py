@@ -30,41 +30,6 @@ def bare_robot(reference: str, idn: int, changes: Sequence[Override] = ()) -> Ro
     return create_robot(robot_name(reference), idn=idn, overrides=changes)
 
 
-def add_assembly_arguments(parser: argparse.ArgumentParser, cached: bool = True) -> None:
-    """The flags that choose what is assembled: robot, idn, base, grippers and ``--set`` overrides
-    (and ``--no-cache`` for commands whose compile the cache can answer)."""
-    parser.add_argument("robot", help="registered robot name or spec file")
-    parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
-    parser.add_argument("--base", help="a registered base instead of the robot's default")
-    parser.add_argument("--no-base", action="store_true", help="no base at all")
-    parser.add_argument(
-        "--gripper",
-        action="append",
-        default=[],
-        metavar="ARM=NAME",
-        help="gripper per arm (NAME may be none)",
-    )
-    parser.add_argument("--no-grippers", action="store_true", help="no grippers on any arm")
-    if cached:
-        parser.add_argument(
-            "--no-cache", action="store_true", help="compile even if the compiled-model cache has this robot"
-        )
-    add_override_argument(parser)
-
-
-def add_override_argument(parser: argparse.ArgumentParser) -> None:
-    """``--set PATH=VALUE``: change a spec field for this run (the registered robot stays as it is)."""
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        dest="overrides",
-        metavar="PATH=VALUE",
-        help="override a spec field, typed by the schema (repeatable), "
-        "e.g. joint_defaults.damping=0.2 or init_qpos[3]=-2.0",
-    )
-
-
 def override_flags(args: argparse.Namespace) -> list[Override]:
     """The ``--set`` flags, parsed (a bad one is an error naming the flag)."""
     return parse_overrides(getattr(args, "overrides", None) or [], label="--set ")

@@ -19,8 +19,7 @@ import warnings
 from collections.abc import Callable
 from typing import TextIO
 
-from assembler.errors import AssemblerError
-from assembler.mjcf.mujoco_warnings import MujocoWarning
+from assembler.errors import AssemblerError, MujocoWarning
 
 INTERRUPTED = 130
 BROKEN_PIPE = 141
@@ -60,6 +59,13 @@ def end_cleanly(command: Callable[[], int]) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return INTERRUPTED
+    except ImportError as error:
+        if not _caused_by_ctrl_c(
+            error
+        ):  # Ctrl-C inside a compiled module's start reads "initialization failed"
+            raise
+        print("interrupted", file=sys.stderr)
+        return INTERRUPTED
     except BrokenPipeError:
         _silence_stdout()
         return BROKEN_PIPE
@@ -69,6 +75,18 @@ def end_cleanly(command: Callable[[], int]) -> int:
             print(f"cannot write to standard output: {error.strerror}", file=sys.stderr)
             return 1
         raise
+
+
+def _caused_by_ctrl_c(error: BaseException) -> bool:
+    """True when a KeyboardInterrupt is among the exceptions that led to ``error``."""
+    seen: set[int] = set()
+    current: BaseException | None = error
+    while current is not None and id(current) not in seen:
+        if isinstance(current, KeyboardInterrupt):
+            return True
+        seen.add(id(current))
+        current = current.__cause__ or current.__context__
+    return False
 
 
 OUTPUT_ERRORS = frozenset({errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT})

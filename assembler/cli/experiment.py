@@ -19,15 +19,6 @@ from assembler.paths import display_path
 from assembler.writing import write_atomically
 
 
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser(
-        "experiment", help="an experiment file's robots, with overrides, in one MJCF"
-    )
-    parser.add_argument("experiment", help="experiment YAML file (kind: experiment)")
-    parser.add_argument("-o", "--output", help="output XML file (default: standard output)")
-    parser.set_defaults(run=run)
-
-
 def describe(robot: RobotModel) -> str:
     """``Sparrow70 (joint_defaults.damping=0.2)``: a robot and the overrides it was built with."""
     changes = applied_overrides(type(robot))

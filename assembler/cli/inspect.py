@@ -5,20 +5,9 @@ from __future__ import annotations
 import argparse
 import json
 
-from assembler.cli.common import add_override_argument, bare_robot, override_flags, table
+from assembler.cli.common import bare_robot, override_flags, table
 from assembler.paths import display_path
 from assembler.schema import JOINT_RULE_ATTRIBUTES
-
-
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("inspect", help="joint parameters and where each value came from")
-    parser.add_argument("robot", help="registered robot name or spec file")
-    parser.add_argument("--idn", type=int, default=0, help="instance number (prefix robot{idn}_)")
-    parser.add_argument(
-        "--format", choices=("text", "json"), default="text", help="text: a table (default); json: for tools"
-    )
-    add_override_argument(parser)
-    parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:

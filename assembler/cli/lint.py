@@ -12,24 +12,11 @@ from collections import Counter
 from collections.abc import Sequence
 
 from assembler.catalog import classes_named
-from assembler.cli.common import add_assembly_arguments, assembled, use_cache
-from assembler.cli.report import add_format_argument, github_annotation, location_fields, print_problems
+from assembler.cli.common import assembled, use_cache
+from assembler.cli.report import github_annotation, location_fields, print_problems
 from assembler.errors import AssemblerError, Problem
 from assembler.lint import SEVERITIES, Finding, LintTarget, lint, part_target, robot_target
 from assembler.models import PartModel
-
-
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("lint", help="report problems MuJoCo accepts silently (codes RA101...)")
-    add_assembly_arguments(parser)
-    parser.add_argument(
-        "more",
-        nargs="*",
-        metavar="ROBOT",
-        help="more robots, spec files or spec folders (bases and grippers alone)",
-    )
-    add_format_argument(parser)
-    parser.set_defaults(run=run)
 
 
 def _target(cls: type[PartModel], args: argparse.Namespace) -> LintTarget:

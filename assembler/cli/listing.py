@@ -11,18 +11,6 @@ from assembler.paths import display_path
 from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("list", help="registered robots (or bases, grippers)")
-    parser.add_argument(
-        "what",
-        nargs="?",
-        choices=("robots", "bases", "grippers"),
-        default="robots",
-        help="what to list (robots)",
-    )
-    parser.set_defaults(run=run)
-
-
 def _dof_text(cls: type[PartModel]) -> str:
     try:
         return str(cls(idn=0).dof_joints)

@@ -7,33 +7,14 @@ which GitHub shows as annotations on the pull request's files. One implementatio
 
 from __future__ import annotations
 
-import argparse
 import json
 import sys
 from collections.abc import Sequence
 
 from assembler.errors import Location, Problem
 
-FORMATS: tuple[str, ...] = ("text", "json", "github")
-"""Output formats: lines for people, JSON for tools, annotations for GitHub Actions."""
-
 GITHUB_LEVELS: dict[str, str] = {"error": "error", "warning": "warning", "info": "notice"}
 """Our severities as GitHub's annotation levels."""
-
-
-def add_format_argument(parser: argparse.ArgumentParser, formats: Sequence[str] = FORMATS) -> None:
-    """The ``--format`` flag, text by default."""
-    meanings = {
-        "text": "lines for people (default)",
-        "json": "for tools",
-        "github": "GitHub Actions annotations",
-    }
-    parser.add_argument(
-        "--format",
-        choices=tuple(formats),
-        default="text",
-        help="; ".join(f"{name}: {meanings[name]}" for name in formats),
-    )
 
 
 def _escape_data(text: str) -> str:

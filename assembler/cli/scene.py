@@ -12,13 +12,6 @@ from assembler.scene import load_scene
 from assembler.writing import write_atomically
 
 
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("scene", help="several placed robots in one MJCF")
-    parser.add_argument("scene", help="scene YAML file")
-    parser.add_argument("-o", "--output", help="output XML file (default: standard output)")
-    parser.set_defaults(run=run)
-
-
 def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     scene.get_model()  # compile first: a scene that does not compile writes nothing

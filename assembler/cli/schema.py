@@ -9,14 +9,6 @@ import sys
 from assembler.schema.json_schema import schema_text
 
 
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("schema", help="print the JSON Schema of spec files (or --markdown docs)")
-    parser.add_argument(
-        "--markdown", action="store_true", help="print the spec reference (docs/spec.md) instead"
-    )
-    parser.set_defaults(run=run)
-
-
 def run(args: argparse.Namespace) -> int:
     sys.stdout.write(schema_text(markdown=args.markdown))
     return 0

@@ -5,25 +5,17 @@ from __future__ import annotations
 import argparse
 import sys
 
-from assembler.cli.report import add_format_argument, print_problems
+from assembler.cli.report import print_problems
 from assembler.errors import AssemblerError
 from assembler.validation import validate_specs
-
-FORMATS = ("text", "github")
-"""validate prints problems only: as lines, or as GitHub annotations."""
-
-
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("validate", help="check spec files and folders")
-    parser.add_argument("paths", nargs="+", help="spec files or folders")
-    parser.add_argument("--compile", action="store_true", help="also compile each robot with MuJoCo")
-    add_format_argument(parser, FORMATS)
-    parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
     try:
-        report = validate_specs(args.paths, compile=args.compile)
+        paths = args.paths or args.specs
+        if not paths:
+            raise AssemblerError("validate: give spec files or folders (or --specs DIR)")
+        report = validate_specs(paths, compile=args.compile)
     except AssemblerError as error:  # printed in the chosen format (GitHub annotations in CI)
         print_problems(error.problems, args.format)
         return 1

@@ -9,30 +9,11 @@ from pathlib import Path
 from typing import Literal
 
 from assembler.assembly import DEFAULT
-from assembler.cli.common import add_assembly_arguments, gripper_choices, robot_name
+from assembler.cli.common import gripper_choices, robot_name
 from assembler.documents import SPEC_SUFFIXES
 from assembler.paths import display_path
 from assembler.registry import robot_class
 from assembler.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
-
-
-def add_parser(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    parser = commands.add_parser("variants", help="one MJCF per variant: a grid of values, random draws")
-    add_assembly_arguments(parser)
-    parser.add_argument("-o", "--output", required=True, metavar="DIR", help="folder for the variants")
-    parser.add_argument(
-        "--grid", action="append", default=[], metavar="PATH=V1,V2", help="values of a field (repeatable)"
-    )
-    parser.add_argument("--random", type=int, metavar="N", help="N random variants (per grid point)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the random draws (default 0)")
-    parser.add_argument(
-        "--uniform", action="append", default=[], metavar="PATH=LOW:HIGH", help="uniform draw (repeatable)"
-    )
-    parser.add_argument(
-        "--normal", action="append", default=[], metavar="PATH=MEAN:STD", help="normal draw (repeatable)"
-    )
-    parser.add_argument("--jobs", type=int, help="worker processes (default: all cores)")
-    parser.set_defaults(run=run)
 
 
 def plan_from(args: argparse.Namespace) -> VariantPlan:

@@ -15,9 +15,7 @@ from collections.abc import Iterator
 
 import mujoco
 
-
-class MujocoWarning(UserWarning):
-    """A warning MuJoCo gave while the assembler read or compiled a model."""
+from assembler.errors import MujocoWarning
 
 
 @contextlib.contextmanager
