@@ -67,6 +67,24 @@ def make_folder(path: Path) -> None:
         path.mkdir(parents=True, exist_ok=True)
 
 
+@contextlib.contextmanager
+def undone_on_failure(folder: Path) -> Iterator[list[Path]]:
+    """Yield a list for the files the block creates; if the block fails, those files and the
+    folders up to ``folder`` that did not exist before are removed (a failed bundle leaves nothing)."""
+    missing = [parent for parent in (folder, *folder.parents) if not parent.exists()]
+    created: list[Path] = []
+    try:
+        yield created
+    except BaseException:
+        for path in created:
+            with contextlib.suppress(OSError):
+                path.unlink()
+        for parent in missing:  # deepest first
+            with contextlib.suppress(OSError):
+                parent.rmdir()  # only if empty: never someone else's files
+        raise
+
+
 def _temporary(target: Path) -> tuple[int, str]:
     prefix = f".{target.name[:TEMPORARY_NAME_STEM]}."
     return tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=target.parent)

@@ -187,3 +187,59 @@ def test_a_bundle_refuses_an_assets_link_leading_out(
     assert capsys.readouterr().err == f"{tmp_path}/bundle/assets leads out of {tmp_path}/bundle; remove it\n"
     assert list(elsewhere.iterdir()) == []
     assert assembler.REGISTERED_ROBOTS["Sparrow7"] is not None
+
+
+def test_a_bundle_that_fails_leaves_no_folder_and_no_file_behind(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    def disk_full(source: object, target: object) -> None:
+        raise OSError(28, "No space left on device")
+
+    robot = tmp_path / "robot"
+    robot.mkdir()
+    (robot / "tet.obj").write_text(
+        "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+    )
+    mjcf = TWO_LINK_MJCF.replace("<worldbody>", '<asset><mesh name="tet" file="tet.obj"/></asset><worldbody>')
+    mjcf = mjcf.replace(
+        '<geom name="base_col"', '<geom type="mesh" mesh="tet" group="1"/><geom name="base_col"'
+    )
+    (robot / "arm.xml").write_text(mjcf)
+    (robot / "arm.yaml").write_text("name: MeshArm\nmjcf: arm.xml\n")
+    monkeypatch.setattr(writing.shutil, "copyfile", disk_full)
+    bundle = tmp_path / "out" / "deep" / "bundle"
+    assert main(["build", str(robot / "arm.yaml"), "--bundle", str(bundle)]) == 1
+    assert capsys.readouterr().err.endswith(": No space left on device\n")
+    assert not (tmp_path / "out").exists()  # neither out/ nor deep/ nor bundle/ nor assets/
+
+
+def test_cache_clear_says_what_it_could_not_remove(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    assert main(["build", "Sparrow7", "-o", str(tmp_path / "a.xml")]) == 0
+    assembler.cache.wait_for_writes()
+    real_unlink = Path.unlink
+
+    def read_only(path: Path, missing_ok: bool = False) -> None:
+        if path.parent == tmp_path / "cache":
+            raise PermissionError(13, "Permission denied")
+        real_unlink(path, missing_ok=missing_ok)
+
+    monkeypatch.setattr(Path, "unlink", read_only)
+    capsys.readouterr()
+    assert main(["cache", "clear"]) == 1
+    (line,) = capsys.readouterr().err.splitlines()
+    assert line.startswith(f"could not remove 2 file(s) from {tmp_path / 'cache'}; first: ")
+    assert line.endswith(": Permission denied")
+
+
+def test_cache_info_says_when_the_cache_cannot_be_used(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "a-file").write_text("")
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "a-file" / "cache"))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    assert main(["cache", "info"]) == 0
+    assert f"status    unusable: {tmp_path / 'a-file'} is a file, not a folder" in capsys.readouterr().out

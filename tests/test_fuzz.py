@@ -205,6 +205,46 @@ def schema_spec(draw: st.DrawFn) -> bytes:
     return yaml.safe_dump(document).encode()
 
 
+PATH_STRINGS = [
+    '"a\\0b.yaml"', '"\\0"', "'" + "x" * 300 + ".yaml'", "'" + "d/" * 2100 + "x.yaml'", "../../../etc/passwd.yaml",
+    "/etc/hostname", "/", ".", "..", "./", "spec.yaml", "./spec.yaml", "sub/../spec.yaml", "'a b.yaml'",
+    "'\u00e9t\u00e9.yaml'", "package://robosuite/../x.yaml", "package://x/y.yaml", "'~/x.yaml'", "'x.yaml\n'",
+    "x.yml", "'*'", "'[x]'", "'file:///etc/passwd'", "'C:\\x.yaml'",
+]  # fmt: skip
+"""Path strings that have broken path handling before, written as YAML scalars."""
+
+
+@st.composite
+def extends_folder(draw: st.DrawFn) -> dict[str, bytes]:
+    """A folder of 1 to 6 specs extending one another: by file, by name, in cycles of any length,
+    through mutated path strings; ``spec.yaml`` is the one built."""
+    count = draw(st.integers(1, 6))
+    names = [f"s{index}.yaml" for index in range(count)]
+    files: dict[str, bytes] = {}
+    for index, file in enumerate(["spec.yaml", *names][:count]):
+        lines = [f"name: Fuzzed{index}"]
+        if index == count - 1 or draw(st.booleans()):
+            mjcf = draw(st.sampled_from([SPARROW7_MJCF, *PATH_STRINGS]))
+            lines.append(f"mjcf: {mjcf}")
+        target = draw(st.sampled_from(["next", "first", "self", "name", "registered", "missing", "path"]))
+        if target == "next" and index + 1 < count:
+            lines.append(f"extends: {names[index]}")
+        elif target == "first":
+            lines.append("extends: spec.yaml")
+        elif target == "self":
+            lines.append(f"extends: {file}")
+        elif target == "name":
+            lines.append(f"extends: Fuzzed{draw(st.integers(0, count))}")
+        elif target == "registered":
+            lines.append(f"extends: {draw(st.sampled_from(NAMES))}")
+        elif target == "missing":
+            lines.append("extends: no/such/spec.yaml")
+        elif target == "path":
+            lines.append(f"extends: {draw(st.sampled_from(PATH_STRINGS))}")
+        files[file] = ("\n".join(lines) + "\n").encode()
+    return files
+
+
 @pytest.fixture
 def isolated(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     """A working folder (MuJoCo may write a log there) and a cache of its own."""
@@ -217,10 +257,15 @@ def isolated(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
 _counter = iter(range(10**9))
 
 
-def _run_case(folder: Path, content: bytes, capsys: pytest.CaptureFixture[str]) -> int:
-    """Build (or, for a base or gripper, validate and compile) one spec; check what the user gets."""
+def _run_case(
+    folder: Path, content: bytes, capsys: pytest.CaptureFixture[str], others: dict[str, bytes] | None = None
+) -> int:
+    """Build (or, for a base or gripper, validate and compile) one spec (with ``others`` beside it);
+    check what the user gets."""
     case = folder / f"case{next(_counter)}"
     case.mkdir()
+    for name, text in (others or {}).items():
+        (case / name).write_bytes(text)
     spec = case / "spec.yaml"
     spec.write_bytes(content)
     out = case / "out"
@@ -266,6 +311,15 @@ def test_specs_drawn_from_the_schema_build_or_fail_cleanly(
     isolated: Path, capsys: pytest.CaptureFixture[str], content: bytes
 ) -> None:
     _run_case(isolated, content, capsys)
+
+
+@FUZZ
+@given(files=extends_folder())
+def test_chains_and_cycles_of_extends_and_odd_paths_build_or_fail_cleanly(
+    isolated: Path, capsys: pytest.CaptureFixture[str], files: dict[str, bytes]
+) -> None:
+    others = {name: text for name, text in files.items() if name != "spec.yaml"}
+    _run_case(isolated, files["spec.yaml"], capsys, others)
 
 
 def test_the_unmutated_shipped_specs_build(isolated: Path, capsys: pytest.CaptureFixture[str]) -> None:

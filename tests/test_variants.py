@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import hashlib
 import json
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 import mujoco
@@ -154,14 +158,143 @@ def test_flag_mistakes_stop_before_anything_is_written(
     assert err.startswith(message) and len(err.splitlines()) == 1
 
 
-def test_no_cache_reaches_the_worker_processes(
+def test_variants_are_kept_in_the_cache_only_when_asked_in_every_worker(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
     cache = tmp_path / "cache"
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(cache))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     grid = ["variants", "Sparrow7", "--grid", "joint_defaults.damping=0.05,0.1", "--jobs", "2"]
-    assert main([*grid, "-o", str(tmp_path / "a"), "--no-cache"]) == 0
-    assert not cache.exists() or not any(cache.iterdir())
-    assert main([*grid, "-o", str(tmp_path / "b")]) == 0
-    assert any(cache.glob("*.mjb"))
+    assert main([*grid, "-o", str(tmp_path / "a")]) == 0
+    assert not cache.exists() or not any(cache.glob("*.mjb"))  # a sweep's models: not kept by default
+    assert main([*grid, "-o", str(tmp_path / "b"), "--cache"]) == 0
+    assert len(list(cache.glob("*.mjb"))) == 2
+
+
+SHADOWED = "joints=[{match: '*', damping: 1.0}]"
+"""Every joint's damping set by a joint override: the damping rule then changes nothing."""
+
+
+def test_a_varied_field_that_changes_nothing_is_named_and_identical_models_are_counted(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, err = variants(
+        capsys,
+        "Sparrow7",
+        "--set",
+        SHADOWED,
+        "--random",
+        "4",
+        "--uniform",
+        "joint_defaults.damping=0.1:0.2",
+        "-o",
+        str(tmp_path / "dr"),
+    )
+    assert code == 0
+    assert out.endswith(": 1 distinct model\n")
+    assert err == (
+        "warning: --uniform joint_defaults.damping changes nothing in the compiled model (variants that differ "
+        "only in it are byte-identical); see what else in the spec sets it\n"
+    )
+    assert len({line["sha256"] for line in manifest(tmp_path / "dr")}) == 1
+
+
+def test_of_two_varied_fields_only_the_idle_one_is_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, err = variants(
+        capsys,
+        "Sparrow7",
+        "--set",
+        SHADOWED,
+        "--grid",
+        "joint_defaults.damping=0.1,0.2",
+        "--grid",
+        "joint_defaults.frictionloss=0.0,0.3",
+        "-o",
+        str(tmp_path / "grid"),
+    )
+    assert code == 0 and out.endswith(": 2 distinct models\n")
+    assert err.startswith("warning: --grid joint_defaults.damping changes nothing") and err.count("\n") == 1
+
+
+def test_a_set_that_changes_nothing_in_a_build_is_a_warning(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "soft.xml"
+    argv = ["build", "Sparrow7", "--set", SHADOWED, "--set", "joint_defaults.damping=0.3", "-o", str(out)]
+    assert main(argv) == 0
+    assert capsys.readouterr().err.splitlines() == [
+        f"wrote {out}",
+        "warning: --set joint_defaults.damping changes nothing in the compiled model; see what else in the spec sets it",
+    ]
+
+
+def test_a_new_run_never_leaves_the_old_manifest_beside_new_files(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    folder = tmp_path / "sweep"
+    assert (
+        variants(capsys, "Sparrow7", "--grid", "joint_defaults.damping=0.1,0.2,0.3", "-o", str(folder))[0]
+        == 0
+    )
+    # A second run with a failing variant: whatever it writes, the manifest describes exactly that.
+    code, _, _ = variants(capsys, "Sparrow7", "--grid", "joint_defaults.damping=-1,0.5", "-o", str(folder))
+    assert code == 1
+    for line in manifest(folder):
+        assert hashlib.sha256((folder / str(line["file"])).read_bytes()).hexdigest() == line["sha256"]
+    assert [line["overrides"] for line in manifest(folder)] == [{"joint_defaults.damping": 0.5}]
+
+
+CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+
+
+def _children(pid: int) -> set[int]:
+    found = set()
+    for status in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = status.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found.add(int(status.parent.name))
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc to find the workers")
+def test_workers_exit_when_the_run_is_killed_and_an_interrupted_run_leaves_a_true_manifest(
+    tmp_path: Path,
+) -> None:
+    values = ",".join(str(0.1 + index / 1000) for index in range(300))
+    command = subprocess.Popen(
+        [sys.executable, "-c", CLI, "variants", "Biped", "--grid", f"joint_defaults.damping={values}"]
+        + ["--jobs", "2", "-o", "out"],
+        cwd=tmp_path,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    deadline = time.monotonic() + 60
+    while len(_children(command.pid)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    workers = _children(command.pid)
+    assert len(workers) >= 2
+    time.sleep(1.0)
+    command.send_signal(signal.SIGKILL)
+    command.wait()
+    deadline = time.monotonic() + 10
+    while (
+        any(Path(f"/proc/{pid}").exists() and _is_running(pid) for pid in workers)
+        and time.monotonic() < deadline
+    ):
+        time.sleep(0.1)
+    assert not [pid for pid in workers if Path(f"/proc/{pid}").exists() and _is_running(pid)]
+    # Killed outright, the run wrote no manifest: none can name a file that is not there.
+    assert not (tmp_path / "out" / "manifest.jsonl").exists()
+
+
+def _is_running(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"

@@ -89,8 +89,11 @@ def compile_assembly(assembly: Assembly) -> CompiledModel:
     return CompiledModel(model, Keyframe.of(model))
 
 
-def compile_model(inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True) -> CompiledModel:
-    """The model ``inputs`` describe: from the cache, or ``build()`` compiled and stored for next time.
+def compile_model(
+    inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+) -> CompiledModel:
+    """The model ``inputs`` describe: from the cache, or ``build()`` compiled and (with ``store``)
+    kept for next time.
 
     ``cache=False`` (``--no-cache``), ``ASSEMBLER_NO_CACHE`` or a hand-written part compile every time.
     """
@@ -98,11 +101,12 @@ def compile_model(inputs: BuildInputs, build: Callable[[], Assembly], cache: boo
     if key is None:
         counts.bypassed += 1
         return compile_assembly(build())
-    store = default_store()
-    place = (str(store.directory), key)
+    keep = store
+    models = default_store()
+    place = (str(models.directory), key)
     model = _recent.get(place)
     if model is None:
-        found = store.load(key)
+        found = models.load(key)
         model = _recent.offer(place, *found) if found is not None else None
     if model is not None:
         counts.hits += 1
@@ -111,5 +115,6 @@ def compile_model(inputs: BuildInputs, build: Callable[[], Assembly], cache: boo
     assembly = build()
     recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
     compiled = compile_assembly(assembly)
-    store.save(key, compiled.model, recorder, assembly.label)
+    if keep:
+        models.save(key, compiled.model, recorder, assembly.label)
     return compiled

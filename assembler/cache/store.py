@@ -57,6 +57,25 @@ class CacheInfo:
     entries: int
     total_bytes: int
     max_bytes: int
+    problem: str = ""
+    """Why models cannot be stored there (the folder is a file, is read-only, ...); empty when usable."""
+
+    not_removed: tuple[str, ...] = ()
+    """After ``clear``: the files that could not be removed, each with the reason."""
+
+
+def usability_problem(directory: Path) -> str:
+    """Why the cache cannot keep models in ``directory``, or "" when it can (made when first needed)."""
+    existing = directory
+    while not existing.exists():
+        if existing.parent == existing:
+            return "no part of its path exists"
+        existing = existing.parent
+    if not existing.is_dir():
+        return f"{existing} is a file, not a folder"
+    if not os.access(existing, os.W_OK | os.X_OK):
+        return f"{existing} is read-only for this user: models are compiled every time"
+    return ""
 
 
 def _descriptor_path(descriptor: int, fallback: Path) -> str:
@@ -248,10 +267,18 @@ class ModelStore:
             with contextlib.suppress(OSError):
                 total += item.stat().st_size
         entries = sum(1 for item in files if item.name.endswith(MANIFEST_SUFFIX))
-        return CacheInfo(self.directory, entries, total, self.max_bytes)
+        return CacheInfo(self.directory, entries, total, self.max_bytes, usability_problem(self.directory))
 
     def clear(self) -> CacheInfo:
-        """Remove every entry (only the cache's own files); returns what was there."""
+        """Remove every entry (only the cache's own files); returns what was there, and the files
+        that could not be removed with why."""
         before = self.info()
-        self._remove(*(item.name for item in self._files()))
-        return before
+        failed: list[str] = []
+        for item in self._files():
+            try:
+                (self.directory / item.name).unlink()
+            except FileNotFoundError:
+                continue  # another process removed it meanwhile
+            except OSError as error:
+                failed.append(f"{item.name}: {error.strerror}")
+        return replace(before, not_removed=tuple(failed))

@@ -173,6 +173,12 @@ def _variants(parser: argparse.ArgumentParser) -> None:
         "--normal", action="append", default=[], metavar="PATH=MEAN:STD", help="normal draw (repeatable)"
     )
     parser.add_argument("--jobs", type=int, help="worker processes (default: all cores)")
+    parser.add_argument(
+        "--cache",
+        action="store_true",
+        help="also keep each variant's compiled model in the cache "
+        "(off: a sweep's models are rarely loaded again)",
+    )
 
 
 def _inspect(parser: argparse.ArgumentParser) -> None:

@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.cli.common import assembled, use_cache
+from assembler.cli.common import assembled, use_cache, warn_idle_overrides
 from assembler.mjcf.emit import bundle
 from assembler.paths import display_path
 
@@ -24,4 +24,5 @@ def run(args: argparse.Namespace) -> int:
         print(f"wrote {display_path(target)}", file=sys.stderr)
     else:
         sys.stdout.write(robot.get_xml(cache=cache))
+    warn_idle_overrides(args)
     return 0

@@ -7,6 +7,7 @@ import argparse
 from assembler.cache import cache_disabled, clear, default_store
 from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size
 from assembler.cli.common import table
+from assembler.errors import AssemblerError
 from assembler.paths import display_path
 
 
@@ -14,6 +15,11 @@ def run(args: argparse.Namespace) -> int:
     store = default_store()
     if args.action == "clear":
         before = clear(store)
+        if before.not_removed:
+            raise AssemblerError(
+                f"could not remove {len(before.not_removed)} file(s) from {display_path(before.directory)}; "
+                f"first: {before.not_removed[0]}"
+            )
         print(
             f"removed {before.entries} {'entry' if before.entries == 1 else 'entries'} "
             f"({format_size(before.total_bytes)}) "
@@ -21,7 +27,10 @@ def run(args: argparse.Namespace) -> int:
         )
         return 0
     info = store.info()
-    status = f"disabled ({DISABLE_VARIABLE} is set)" if cache_disabled() else "enabled"
+    if cache_disabled():
+        status = f"disabled ({DISABLE_VARIABLE} is set)"
+    else:
+        status = f"unusable: {info.problem}" if info.problem else "enabled"
     rows = [
         ("location", display_path(info.directory)),
         ("entries", str(info.entries)),

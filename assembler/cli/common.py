@@ -4,12 +4,14 @@ and printing aligned tables."""
 from __future__ import annotations
 
 import argparse
+import sys
 from collections.abc import Sequence
 from pathlib import Path
 
 from assembler.assembly import DEFAULT, assemble, create_robot
 from assembler.catalog import register_specs
 from assembler.documents import SPEC_SUFFIXES, Override, parse_overrides
+from assembler.effects import overrides_without_effect
 from assembler.errors import AssemblerError
 from assembler.models import RobotModel
 from assembler.registry import robot_class
@@ -48,15 +50,30 @@ def gripper_choices(values: list[str]) -> dict[str, str | None]:
     return choices
 
 
-def assembled(args: argparse.Namespace) -> RobotModel:
-    """The robot the assembly flags describe: its default base and grippers unless they say otherwise."""
+def assembled(args: argparse.Namespace, overrides: Sequence[Override] | None = None) -> RobotModel:
+    """The robot the assembly flags describe: its default base and grippers unless they say otherwise
+    (with ``overrides`` instead of the ``--set`` flags when given)."""
     name = robot_name(args.robot)
     base = None if args.no_base else (args.base or DEFAULT)
     grippers = gripper_choices(args.gripper)
     if args.no_grippers:
         arms = getattr(robot_class(name).spec, "arms", ())
         grippers = {arm: None for arm in arms}
-    return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=override_flags(args))
+    changes = override_flags(args) if overrides is None else overrides
+    return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
+
+
+def warn_idle_overrides(args: argparse.Namespace) -> None:
+    """A warning line per ``--set`` that changes nothing in the compiled model."""
+    idle = overrides_without_effect(
+        lambda changes: assembled(args, changes), override_flags(args), use_cache(args)
+    )
+    for override in idle:
+        print(
+            f"warning: {override.label}{override.key} changes nothing in the compiled model; "
+            "see what else in the spec sets it",
+            file=sys.stderr,
+        )
 
 
 def use_cache(args: argparse.Namespace) -> bool:

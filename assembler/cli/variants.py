@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 from typing import Literal
@@ -38,17 +37,26 @@ def plan_from(args: argparse.Namespace) -> VariantPlan:
         seed=args.seed,
         spec_paths=(*(str(Path(p).resolve()) for p in args.specs), *robot_file),
         cache=not args.no_cache,
+        store=args.cache,
+        jobs=args.jobs,
     )
 
 
 def run(args: argparse.Namespace) -> int:
     plan = plan_from(args)
-    results = write_variants(plan, args.output, args.jobs or os.cpu_count())
-    written = sum(r.file is not None for r in results)
+    run = write_variants(plan, args.output)
     manifest = display_path(Path(args.output) / MANIFEST)
     folder = display_path(args.output)
-    print(f"wrote {written} of {len(results)} variants of {plan.robot} to {folder} ({manifest})")
-    problems = failures(results)
+    models = f"{run.distinct} distinct model{'s' if run.distinct != 1 else ''}"
+    written = f"wrote {len(run.written)} of {len(run.results)} variants of {plan.robot}"
+    print(f"{written} to {folder} ({manifest}): {models}")
+    for key in run.no_effect:
+        print(
+            f"warning: {plan.flag_of(key)} {key} changes nothing in the compiled model (variants that differ "
+            "only in it are byte-identical); see what else in the spec sets it",
+            file=sys.stderr,
+        )
+    problems = failures(run.results)
     for problem in problems:
         print(str(problem), file=sys.stderr)
     return 1 if problems else 0

@@ -18,7 +18,7 @@ import mujoco
 
 from assembler.errors import AssemblerError
 from assembler.paths import display_path
-from assembler.writing import copy_atomically, make_folder, write_atomically
+from assembler.writing import copy_atomically, make_folder, undone_on_failure, write_atomically
 
 XML_SIGNIFICANT_DIGITS = 15
 """Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""
@@ -101,9 +101,16 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
         raise AssemblerError(f"bundle: expected a file name for the XML, got '{xml_name}'")
     root = ET.fromstring(to_xml(spec))
     assets = directory / "assets"
-    make_folder(assets)
-    if not assets.resolve().is_relative_to(directory.resolve()):  # a link planted in the folder
-        raise AssemblerError(f"{display_path(assets)} leads out of {display_path(directory)}; remove it")
+    with undone_on_failure(assets) as created:
+        make_folder(assets)
+        if not assets.resolve().is_relative_to(directory.resolve()):  # a link planted in the folder
+            raise AssemblerError(f"{display_path(assets)} leads out of {display_path(directory)}; remove it")
+        return _write_bundle(root, directory, assets, xml_name, created)
+
+
+def _write_bundle(
+    root: ET.Element, directory: Path, assets: Path, xml_name: str, created: list[Path]
+) -> Path:
     placed: dict[str, str] = {}  # absolute source -> relative target
     taken: dict[str, str] = {}  # target name -> content digest
 
@@ -118,6 +125,8 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
             n += 1
             name = f"{stem}_{n}{suffix}"
         if name not in taken:
+            if not (assets / name).exists():
+                created.append(assets / name)
             copy_atomically(source, assets / name)
             taken[name] = digest
         placed[file] = f"assets/{name}"
@@ -129,5 +138,7 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
                 if element.get(attribute):
                     element.set(attribute, place(element.get(attribute, "")))
     target = directory / xml_name
+    if not target.exists():
+        created.append(target)
     write_atomically(target, ET.tostring(root, encoding="unicode") + "\n")
     return target

@@ -302,12 +302,13 @@ class RobotModel(PartModel):
                 self._keyframe.write(self._mjspec)
         return self._mjspec
 
-    def get_model(self, cache: bool = True) -> mujoco.MjModel:
+    def get_model(self, cache: bool = True, store: bool = True) -> mujoco.MjModel:
         """Compile the assembly (with its ``home`` keyframe) into a new ``mujoco.MjModel``; an unchanged
-        robot comes from the compiled-model cache unless ``cache`` is False."""
+        robot comes from the compiled-model cache unless ``cache`` is False, and a compiled one is
+        kept there unless ``store`` is False."""
         if self._mjspec is not None:
             return compile_with_home(self._mjspec, self.assembly_home(), self.describe())
-        compiled = compile_model(self.build_inputs(), self._assembly, cache=cache)
+        compiled = compile_model(self.build_inputs(), self._assembly, cache=cache, store=store)
         self._keyframe = compiled.keyframe
         return compiled.model
 
@@ -315,9 +316,9 @@ class RobotModel(PartModel):
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
 
-    def get_xml(self, cache: bool = True) -> str:
+    def get_xml(self, cache: bool = True, store: bool = True) -> str:
         """The assembly as one standalone MJCF document (compiled once first, so it is valid)."""
-        self.get_model(cache=cache)
+        self.get_model(cache=cache, store=store)
         return to_xml(self.mjspec)
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
