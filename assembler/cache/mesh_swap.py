@@ -1,0 +1,162 @@
+"""Compile a spec with its meshes read from the mesh store: the one call the compile path needs.
+
+::
+
+    with use_stored_meshes(spec):
+        model = spec.compile()
+
+Before the compile, every OBJ and STL mesh whose file is in the store (:mod:`assembler.cache.meshes`)
+is given to MuJoCo as its stored ``.msh`` bytes, in memory under the mesh's own file name
+(``spec.assets``), with ``content_type`` set to ``.msh``; nothing else of the mesh changes, and the
+model is identical to one compiled from the files. On leaving the block the spec is as it was, and
+the files that were not in the store are handed to a background process that decodes and stores
+them (:mod:`assembler.cache.mesh_fill`): MuJoCo has just decoded them for this compile, so the first
+contact costs this process nothing more than hashing them, and the next process finds them.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from collections.abc import Iterable
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from types import TracebackType
+
+import mujoco
+
+from assembler.cache.mesh_data import MSH_CONTENT_TYPE, mesh_kind, msh_supported
+from assembler.cache.meshes import MeshStore, default_mesh_store
+
+Mesh = tuple[str, str]
+"""(absolute file path, decoder content type) of a mesh file."""
+
+_MISSING = b"\0missing"
+_fillers: list[subprocess.Popen[bytes]] = []
+
+
+@dataclass
+class MeshSwap:
+    """What :func:`use_stored_meshes` changed in a spec (undone by :meth:`restore`), and what it found."""
+
+    spec: mujoco.MjSpec
+    store: MeshStore | None
+    stored: list[str] = field(default_factory=list)
+    """Files whose meshes came from the store."""
+
+    missing: list[Mesh] = field(default_factory=list)
+    """Files not in the store yet: MuJoCo decodes them in this compile; :func:`store_meshes` keeps them."""
+
+    _changed: list[tuple[mujoco.MjsMesh, str]] = field(default_factory=list)
+
+    def restore(self) -> None:
+        """Put back every mesh's ``content_type`` and take the stored meshes out of ``spec.assets``
+        (a live dict: assigning to it adds to it, so the additions are removed one by one)."""
+        for mesh, content_type in self._changed:
+            mesh.content_type = content_type
+        self._changed = []
+        assets = self.spec.assets
+        for path in self.stored:
+            assets.pop(path, None)
+
+    def __enter__(self) -> MeshSwap:
+        return self
+
+    def __exit__(
+        self, kind: type[BaseException] | None, error: BaseException | None, trace: TracebackType | None
+    ) -> None:
+        self.restore()
+        if self.store is not None and self.missing:
+            store_meshes(self.missing, self.store)
+
+
+def _look_up(store: MeshStore, mesh: Mesh) -> bytes | None:
+    """The stored bytes of ``mesh`` (empty: MuJoCo reads the file), _MISSING, or None when the
+    file cannot be read steadily (the compile reports a missing file its own way)."""
+    found = store.digest(mesh[0])
+    if found is None:
+        return None
+    payload = store.get(mesh[1], found[0])
+    return _MISSING if payload is None else payload
+
+
+def _swappable(spec: mujoco.MjSpec) -> dict[Mesh, list[mujoco.MjsMesh]]:
+    """The spec's meshes by file, for files every mesh reads through the same decoder."""
+    by_path: dict[str, list[mujoco.MjsMesh]] = {}
+    for mesh in spec.meshes:
+        if mesh.file:
+            by_path.setdefault(mesh.file, []).append(mesh)
+    found: dict[Mesh, list[mujoco.MjsMesh]] = {}
+    for path, meshes in by_path.items():
+        kinds = {mesh_kind(path, mesh.content_type) for mesh in meshes}
+        if len(kinds) == 1 and (kind := kinds.pop()) is not None:
+            found[(path, kind)] = meshes
+    return found
+
+
+def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> MeshSwap:
+    """Point every OBJ and STL mesh of ``spec`` whose file is stored at its stored ``.msh``; use the
+    result as a context manager around the compile (or call ``restore()`` after it).
+
+    ``store``: the default one (the cache folder's ``meshes/``) unless given; with the cache off,
+    or a MuJoCo that cannot read ``.msh`` from memory, nothing changes. Files already given in
+    ``spec.assets``, meshes with relative paths and a spec with ``strippath`` are left alone.
+    """
+    store = store if store is not None else default_mesh_store()
+    swap = MeshSwap(spec, store)
+    if store is None or spec.strippath or not msh_supported():
+        return swap
+    assets = dict(spec.assets)
+    meshes = {mesh: users for mesh, users in _swappable(spec).items() if mesh[0] not in assets}
+    if len(meshes) > 1:
+        with ThreadPoolExecutor(min(4, os.cpu_count() or 1)) as pool:  # hashing releases the GIL
+            found = list(pool.map(lambda mesh: _look_up(store, mesh), meshes))
+    else:
+        found = [_look_up(store, mesh) for mesh in meshes]
+    added: dict[str, bytes] = {}
+    for (mesh, users), payload in zip(meshes.items(), found, strict=True):
+        if payload is _MISSING:
+            swap.missing.append(mesh)
+        elif payload:
+            added[mesh[0]] = payload
+            swap.stored.append(mesh[0])
+            for user in users:
+                swap._changed.append((user, user.content_type))
+                user.content_type = MSH_CONTENT_TYPE
+    if added:
+        spec.assets = {**assets, **added}
+    return swap
+
+
+def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = True) -> None:
+    """Decode ``meshes`` and keep them in ``store``: in a process of its own that outlives this
+    one (lowered priority, output discarded), or here and now with ``background=False``."""
+    meshes = list(meshes)
+    if not meshes:
+        return
+    if not background or not sys.executable:
+        from assembler.cache.mesh_fill import fill
+
+        fill(store, meshes)
+        return
+    arguments = [str(store.directory), str(store.max_bytes)] + [part for mesh in meshes for part in mesh]
+    options: dict[str, object] = {"start_new_session": True} if os.name == "posix" else {}
+    try:
+        filler = subprocess.Popen(
+            [sys.executable, "-m", "assembler.cache.mesh_fill", *arguments],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            **options,  # type: ignore[call-overload]
+        )
+    except OSError:
+        return  # no process to spare: the next compile decodes them again
+    _fillers[:] = [process for process in _fillers if process.poll() is None]
+    _fillers.append(filler)
+
+
+def wait_for_fillers() -> None:
+    """Block until every background filler this process started is done (tests, benchmarks)."""
+    while _fillers:
+        _fillers.pop().wait()
