@@ -23,7 +23,12 @@ import pytest
 
 import assembler
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, decode
-from assembler.cache.mesh_swap import store_meshes, use_stored_meshes, wait_for_fillers
+from assembler.cache.mesh_swap import (
+    compile_with_stored_meshes,
+    store_meshes,
+    use_stored_meshes,
+    wait_for_fillers,
+)
 from assembler.cache.meshes import MAGIC, MeshStore, default_mesh_store
 from assembler.paths import package_root
 
@@ -230,6 +235,25 @@ def test_the_compile_reads_the_stored_mesh_not_the_file(store: MeshStore, tmp_pa
     store.put("model/obj", digest[0], bytes(payload))
     ours, _ = compile_with_store(mesh_spec([obj]), store)
     assert "mesh_vert" in differences(ours, mesh_spec([obj]).compile())[0]
+
+
+def test_a_stored_mesh_the_compiler_refuses_falls_back_to_the_file(store: MeshStore, tmp_path: Path) -> None:
+    obj = write_obj(tmp_path / "sphere.obj")
+    digest = store.digest(str(obj))
+    assert digest is not None
+    corners = np.array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], np.float32)
+    bad = (
+        np.array([4, 0, 0, 1], np.int32).tobytes()
+        + corners.tobytes()
+        + np.array([0, 1, 99], np.int32).tobytes()
+    )
+    store.put("model/obj", digest[0], bad)  # whole and verified, but no mesh MuJoCo accepts
+    with pytest.raises(ValueError, match="face"), use_stored_meshes(spec := mesh_spec([obj]), store):
+        spec.compile()
+    spec = mesh_spec([obj])
+    model = compile_with_stored_meshes(spec, spec.compile, store)
+    assert differences(model, mesh_spec([obj]).compile())[0] == []
+    assert spec.meshes[0].content_type == "" and spec.assets == {}
 
 
 def test_the_spec_is_as_it_was_after_the_compile(store: MeshStore, tmp_path: Path) -> None:

@@ -2,7 +2,9 @@
 
 ::
 
-    with use_stored_meshes(spec):
+    model = compile_with_stored_meshes(spec, spec.compile)
+
+    with use_stored_meshes(spec):      # the same, without the fallback below
         model = spec.compile()
 
 Before the compile, every OBJ and STL mesh whose file is in the store (:mod:`assembler.cache.meshes`)
@@ -12,6 +14,9 @@ model is identical to one compiled from the files. On leaving the block the spec
 the files that were not in the store are handed to a background process that decodes and stores
 them (:mod:`assembler.cache.mesh_fill`): MuJoCo has just decoded them for this compile, so the first
 contact costs this process nothing more than hashing them, and the next process finds them.
+
+A compile that fails with stored meshes is run once more from the files, so the store can never
+turn a model that compiles into an error (the error a user sees is the files' own).
 """
 
 from __future__ import annotations
@@ -19,10 +24,11 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from types import TracebackType
+from typing import TypeVar
 
 import mujoco
 
@@ -32,8 +38,13 @@ from assembler.cache.meshes import MeshStore, default_mesh_store
 Mesh = tuple[str, str]
 """(absolute file path, decoder content type) of a mesh file."""
 
+Result = TypeVar("Result")
+
 _MISSING = b"\0missing"
 _fillers: list[subprocess.Popen[bytes]] = []
+_handed: set[tuple[str, Mesh]] = set()
+"""(store folder, mesh) given to a filler by this process: a loop that compiles the same new
+meshes again and again starts one filler for them, not one per compile."""
 
 
 @dataclass
@@ -129,16 +140,33 @@ def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> Me
     return swap
 
 
+def compile_with_stored_meshes(
+    spec: mujoco.MjSpec, compile_spec: Callable[[], Result], store: MeshStore | None = None
+) -> Result:
+    """``compile_spec()`` (a compile of ``spec``) with ``spec``'s meshes read from the store, the
+    spec restored afterwards and new mesh files handed to a background filler. If the compile
+    fails with stored meshes in, it runs again from the files and that result or error stands."""
+    with use_stored_meshes(spec, store) as swap:
+        if not swap.stored:
+            return compile_spec()
+        try:
+            return compile_spec()
+        except ValueError:
+            pass
+    return compile_spec()
+
+
 def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = True) -> None:
     """Decode ``meshes`` and keep them in ``store``: in a process of its own that outlives this
     one (lowered priority, output discarded), or here and now with ``background=False``."""
     meshes = list(meshes)
-    if not meshes:
-        return
-    if not background or not sys.executable:
+    if not background:
         from assembler.cache.mesh_fill import fill
 
         fill(store, meshes)
+        return
+    meshes = [mesh for mesh in meshes if (str(store.directory), mesh) not in _handed]
+    if not meshes or not sys.executable:
         return
     arguments = [str(store.directory), str(store.max_bytes)] + [part for mesh in meshes for part in mesh]
     options: dict[str, object] = {"start_new_session": True} if os.name == "posix" else {}
@@ -152,6 +180,7 @@ def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = Tr
         )
     except OSError:
         return  # no process to spare: the next compile decodes them again
+    _handed.update((str(store.directory), mesh) for mesh in meshes)
     _fillers[:] = [process for process in _fillers if process.poll() is None]
     _fillers.append(filler)
 
