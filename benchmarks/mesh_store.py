@@ -1,7 +1,8 @@
 """The mesh store measured in new processes: ``python -m benchmarks.mesh_store [ROBOT ...] [--repeats N]``.
 
 For each robot (default Panda and GR1), interleaved, each run a new interpreter timed from outside
-(whole process: start-up, imports, assembly, compile, exit) and from inside (the compile alone):
+(whole process: start-up, imports, assembly, compile, exit; wall and CPU seconds, the latter less
+sensitive to a busy machine) and from inside (the compile alone):
 
 - ``mujoco``: MuJoCo compiling robosuite's own assembled XML, written to a file first (the reference);
 - ``plain``: our assembly compiled from the mesh files (no store);
@@ -20,6 +21,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -82,13 +84,16 @@ def _run(mode: str, name: str, target: str) -> dict[str, Any]:
     """A new interpreter for ``child``: its JSON plus the whole process's wall time."""
     environment = {**os.environ, "PYTHONPATH": str(REPOSITORY)}
     command = [sys.executable, "-m", "benchmarks.mesh_store", "child", mode, name, target]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     result = subprocess.run(command, capture_output=True, text=True, cwd=REPOSITORY, env=environment)
     wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
     lines = [line for line in result.stdout.splitlines() if line.startswith("{")]
     if result.returncode or not lines:
         raise RuntimeError(f"{mode} {name}: {(result.stderr.strip().splitlines() or ['no output'])[-1]}")
-    figures: dict[str, Any] = {**json.loads(lines[-1]), "process": wall}
+    figures: dict[str, Any] = {**json.loads(lines[-1]), "process": wall, "cpu": cpu}
     if figures.get("filler"):
         while _alive(figures["filler"]):  # the filler outlives the process: wait before the next run
             time.sleep(0.02)
@@ -124,14 +129,19 @@ def measure(name: str, repeats: int, scratch: Path) -> dict[str, dict[str, float
 
 def report(name: str, figures: dict[str, dict[str, float]]) -> None:
     reference = figures["mujoco"]
-    print(f"\n{name}: medians, seconds (ratios against MuJoCo compiling robosuite's XML in a new process)")
+    print(f"\n{name}: medians, seconds; ratios against MuJoCo compiling robosuite's XML in a new process")
     for mode, values in figures.items():
         ratio = values["process"] / reference["process"]
-        parts = ", ".join(f"{key} {value:.3f}" for key, value in values.items() if key != "process")
-        print(f"  {mode:14s} process {values['process']:.3f} ({ratio:.2f}x)  [{parts}]")
-    warm = figures["warm"]["process"] / reference["process"]
-    first = figures["first contact"]["process"] / reference["process"]
-    print(f"  targets: warm {warm:.2f}x (<= 0.5x), first contact {first:.2f}x (<= 1.1x)")
+        cpu = values["cpu"] / reference["cpu"]
+        parts = ", ".join(
+            f"{key} {value:.3f}" for key, value in values.items() if key not in ("process", "cpu")
+        )
+        wall = f"wall {values['process']:.3f} ({ratio:.2f}x)"
+        print(f"  {mode:14s} {wall} cpu {values['cpu']:.3f} ({cpu:.2f}x)  [{parts}]")
+    for figure in ("process", "cpu"):
+        warm = figures["warm"][figure] / reference[figure]
+        first = figures["first contact"][figure] / reference[figure]
+        print(f"  targets ({figure}): warm {warm:.2f}x (<= 0.5x), first contact {first:.2f}x (<= 1.1x)")
 
 
 def main(argv: list[str]) -> int:

@@ -60,16 +60,17 @@ class MeshSwap:
     """Files not in the store yet: MuJoCo decodes them in this compile; :func:`store_meshes` keeps them."""
 
     _changed: list[tuple[mujoco.MjsMesh, str]] = field(default_factory=list)
+    _added: list[str] = field(default_factory=list)
 
     def restore(self) -> None:
         """Put back every mesh's ``content_type`` and take the stored meshes out of ``spec.assets``
         (a live dict: assigning to it adds to it, so the additions are removed one by one)."""
         for mesh, content_type in self._changed:
             mesh.content_type = content_type
-        self._changed = []
         assets = self.spec.assets
-        for path in self.stored:
+        for path in self._added:
             assets.pop(path, None)
+        self._changed, self._added = [], []
 
     def __enter__(self) -> MeshSwap:
         return self
@@ -137,6 +138,7 @@ def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> Me
                 user.content_type = MSH_CONTENT_TYPE
     if added:
         spec.assets = {**assets, **added}
+        swap._added = list(added)
     return swap
 
 
