@@ -491,17 +491,22 @@ def test_stale_claims_and_temporary_files_are_removed_and_a_fresh_claim_holds(
     assert store.clear().entries == 1 and [path.name for path in store.directory.iterdir()] == ["notes.txt"]
 
 
-def test_the_background_filler_stores_what_a_compile_met(
+def test_the_background_filler_stores_what_a_compile_met_and_ignores_the_working_folder(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    decoy = tmp_path / "work" / "assembler"
+    decoy.mkdir(parents=True)
+    (decoy / "__init__.py").write_text(f"open({str(tmp_path / 'decoy-ran')!r}, 'w')\n")
+    monkeypatch.chdir(decoy.parent)
     files = [write_obj(tmp_path / "sphere.obj"), write_stl(tmp_path / "sphere.stl")]
     with use_stored_meshes(spec := mesh_spec(files)) as swap:
         spec.compile()
     assert len(swap.missing) == 2
     wait_for_fillers()
+    assert not (tmp_path / "decoy-ran").exists()
     store = default_mesh_store()
     assert store is not None and store.directory == tmp_path / "cache" / "meshes"
     assert store.max_bytes == 512 * 1024**2

@@ -1,8 +1,8 @@
 """Fill the mesh store: decode mesh files with MuJoCo's decoder and keep the result.
 
-``python -m assembler.cache.mesh_fill STORE_DIR MAX_BYTES PATH KIND [PATH KIND ...]`` is the
-background process :func:`assembler.cache.mesh_swap.store_meshes` starts after a compile that met
-new mesh files; :func:`fill` is the same work in the calling process.
+:func:`main` (arguments ``STORE_DIR MAX_BYTES PATH KIND [PATH KIND ...]``) is the background
+process :func:`assembler.cache.mesh_swap.store_meshes` starts after a compile that met new mesh
+files; :func:`fill` is the same work in the calling process.
 
 Each file is hashed again here (its record usually answers): the entry is stored under the digest
 of the content that was decoded, and only if the file's stat is the same before hashing and after
@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import sys
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -68,7 +67,3 @@ def main(arguments: list[str]) -> int:
     store = MeshStore(Path(arguments[0]), int(arguments[1]))
     fill(store, zip(arguments[2::2], arguments[3::2], strict=True))
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -21,6 +21,7 @@ turn a model that compiles into an error (the error a user sees is the files' ow
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -174,7 +175,7 @@ def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = Tr
     options: dict[str, object] = {"start_new_session": True} if os.name == "posix" else {}
     try:
         filler = subprocess.Popen(
-            [sys.executable, "-m", "assembler.cache.mesh_fill", *arguments],
+            [sys.executable, "-I", "-c", _FILLER, json.dumps(_import_path()), *arguments],
             stdin=subprocess.DEVNULL,
             stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL,
@@ -185,6 +186,18 @@ def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = Tr
     _handed.update((str(store.directory), mesh) for mesh in meshes)
     _fillers[:] = [process for process in _fillers if process.poll() is None]
     _fillers.append(filler)
+
+
+_FILLER = (
+    "import json, sys; sys.path[:] = json.loads(sys.argv.pop(1)); "
+    "from assembler.cache.mesh_fill import main; sys.exit(main(sys.argv[1:]))"
+)
+"""The filler's start: isolated (``-I``: no working folder or PYTHON* variables on its path), with
+this process's import path, so it runs this very assembler and MuJoCo and nothing a folder holds."""
+
+
+def _import_path() -> list[str]:
+    return [os.path.abspath(entry) for entry in sys.path if entry]
 
 
 def wait_for_fillers() -> None:
