@@ -24,6 +24,7 @@ import pytest
 import assembler
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, decode
 from assembler.cache.mesh_swap import (
+    MeshSwap,
     compile_with_stored_meshes,
     store_meshes,
     use_stored_meshes,
@@ -44,6 +45,13 @@ def no_asset_cache() -> Iterator[None]:
     mujoco.mj_setCacheCapacity(cache, 0)
     yield
     mujoco.mj_setCacheCapacity(cache, capacity)
+
+
+@pytest.fixture(autouse=True)
+def no_filler_left() -> Iterator[None]:
+    """No background filler outlives its test (it would write into a folder being removed)."""
+    yield
+    wait_for_fillers()
 
 
 @pytest.fixture
@@ -159,19 +167,26 @@ def differences(ours: mujoco.MjModel, reference: mujoco.MjModel) -> tuple[list[s
     return found, compared
 
 
+def compile_from(spec: mujoco.MjSpec, store: MeshStore) -> tuple[mujoco.MjModel, MeshSwap]:
+    """Compile ``spec`` with its stored meshes, handing nothing to a background filler (the
+    context manager would: that has a test of its own)."""
+    swap = use_stored_meshes(spec, store)
+    try:
+        return spec.compile(), swap
+    finally:
+        swap.restore()
+
+
 def compile_with_store(spec: mujoco.MjSpec, store: MeshStore) -> tuple[mujoco.MjModel, list[str]]:
-    """Compile ``spec`` with its stored meshes; the model and the files that came from the store."""
-    with use_stored_meshes(spec, store) as swap:
-        model = spec.compile()
+    """Compile ``spec`` with every mesh from the store; the model and the files that came from it."""
+    model, swap = compile_from(spec, store)
     assert swap.missing == []
     return model, swap.stored
 
 
 def fill(spec: mujoco.MjSpec, store: MeshStore) -> None:
     """A first compile: it stores what it meets (here and now, not in a background process)."""
-    swap = use_stored_meshes(spec, store)
-    spec.compile()
-    swap.restore()
+    swap = compile_from(spec, store)[1]
     store_meshes(swap.missing, store, background=False)
 
 
@@ -274,8 +289,7 @@ def test_an_obj_whose_normals_are_numbered_apart_is_left_to_mujoco(store: MeshSt
     obj = write_obj(tmp_path / "apart.obj", shared_indices=False)
     assert decode(str(obj)) is None
     fill(mesh_spec([obj]), store)
-    with use_stored_meshes(spec := mesh_spec([obj]), store) as swap:
-        model = spec.compile()
+    model, swap = compile_from(mesh_spec([obj]), store)
     assert swap.stored == [] and swap.missing == []  # known: no .msh form, not decoded again
     assert differences(model, mesh_spec([obj]).compile())[0] == []
 
@@ -298,8 +312,7 @@ def test_an_edited_mesh_is_a_miss_and_a_file_edited_a_moment_ago_is_not_stored(
     write_obj(obj, center=(0.01, 0, 0))
     os.utime(obj)  # modified now
     for _ in range(2):
-        with use_stored_meshes(spec := mesh_spec([obj]), store) as swap:
-            model = spec.compile()
+        model, swap = compile_from(mesh_spec([obj]), store)
         assert swap.stored == [] and swap.missing == [(str(obj), "model/obj")]
         assert differences(model, mesh_spec([obj]).compile())[0] == []
         store_meshes(swap.missing, store, background=False)  # too recent: nothing is stored
@@ -329,8 +342,7 @@ def test_a_flipped_byte_anywhere_in_an_entry_is_a_miss_and_removes_it(
     for cut in (0, 20, len(whole) - 1):
         entry.write_bytes(whole[:cut])
         assert store.get("model/obj", digest[0]) is None
-    with use_stored_meshes(spec := mesh_spec([obj]), store) as swap:
-        model = spec.compile()
+    model, swap = compile_from(mesh_spec([obj]), store)
     assert swap.missing == [(str(obj), "model/obj")]
     assert differences(model, mesh_spec([obj]).compile())[0] == []
 
@@ -397,8 +409,9 @@ FULL_DISK = textwrap.dedent(
     resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
     spec = mujoco.MjSpec.from_string(sys.argv[2])
     store = MeshStore(Path(sys.argv[1]), 1 << 30)
-    with use_stored_meshes(spec, store) as swap:
-        model = spec.compile()
+    swap = use_stored_meshes(spec, store)
+    model = spec.compile()
+    swap.restore()
     store_meshes(swap.missing, store, background=False)
     print(model.nmeshvert)
     """
@@ -418,8 +431,7 @@ def test_a_full_disk_stores_nothing_and_the_model_is_the_same(store: MeshStore, 
     assert int(result.stdout) == mesh_spec(files).compile().nmeshvert
     assert list(store.directory.glob("*.msh")) == []  # every entry is larger than the limit
     assert list(store.directory.glob(".*.tmp")) == []  # and no half-written file is left
-    with use_stored_meshes(spec := mesh_spec(files), store) as swap:
-        model = spec.compile()
+    model, swap = compile_from(mesh_spec(files), store)
     assert len(swap.missing) == 2
     assert differences(model, mesh_spec(files).compile())[0] == []
 
@@ -430,8 +442,7 @@ def test_a_store_folder_that_cannot_be_written_only_means_no_store(tmp_path: Pat
     blocker.write_text("not a folder")
     store = MeshStore(blocker / "meshes", 1 << 30)
     fill(mesh_spec(files), store)
-    with use_stored_meshes(spec := mesh_spec(files), store) as swap:
-        model = spec.compile()
+    model, swap = compile_from(mesh_spec(files), store)
     assert swap.stored == [] and len(swap.missing) == 1
     assert differences(model, mesh_spec(files).compile())[0] == []
 
@@ -466,8 +477,7 @@ def test_eviction_keeps_the_bound_and_drops_the_least_recently_used_first(
     compile_with_store(mesh_spec([a]), store)  # a is used after b
     fill(mesh_spec([c]), store)
     assert store.info().total_bytes <= store.max_bytes and store.info().entries == 2
-    with use_stored_meshes(mesh_spec([a, b, c]), store) as swap:
-        pass
+    swap = use_stored_meshes(mesh_spec([a, b, c]), store)
     assert swap.stored == [str(a), str(c)] and swap.missing == [(str(b), "model/obj")]
 
 
