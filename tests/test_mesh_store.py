@@ -184,6 +184,13 @@ def compile_with_store(spec: mujoco.MjSpec, store: MeshStore) -> tuple[mujoco.Mj
     return model, swap.stored
 
 
+def identity(store: MeshStore, path: Path) -> tuple[str, int]:
+    """(content digest, size): what the store knows a file by."""
+    found = store.digest(str(path))
+    assert found is not None
+    return found[0], found[1][0]
+
+
 def fill(spec: mujoco.MjSpec, store: MeshStore) -> None:
     """A first compile: it stores what it meets (here and now, not in a background process)."""
     swap = compile_from(spec, store)[1]
@@ -242,27 +249,25 @@ def test_the_compile_reads_the_stored_mesh_not_the_file(store: MeshStore, tmp_pa
     """The control for the tests above: a stored mesh that differs from its file changes the model."""
     obj = write_obj(tmp_path / "sphere.obj")
     fill(mesh_spec([obj]), store)
-    digest = store.digest(str(obj))
-    assert digest is not None
-    payload = bytearray(store.get("model/obj", digest[0]) or b"")
+    digest = identity(store, obj)
+    payload = bytearray(store.get("model/obj", *digest) or b"")
     vertices = np.frombuffer(payload, np.float32, count=9, offset=16) * 2
     payload[16 : 16 + 36] = vertices.tobytes()
-    store.put("model/obj", digest[0], bytes(payload))
+    store.put("model/obj", *digest, bytes(payload))
     ours, _ = compile_with_store(mesh_spec([obj]), store)
     assert "mesh_vert" in differences(ours, mesh_spec([obj]).compile())[0]
 
 
 def test_a_stored_mesh_the_compiler_refuses_falls_back_to_the_file(store: MeshStore, tmp_path: Path) -> None:
     obj = write_obj(tmp_path / "sphere.obj")
-    digest = store.digest(str(obj))
-    assert digest is not None
+    digest = identity(store, obj)
     corners = np.array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], np.float32)
     bad = (
         np.array([4, 0, 0, 1], np.int32).tobytes()
         + corners.tobytes()
         + np.array([0, 1, 99], np.int32).tobytes()
     )
-    store.put("model/obj", digest[0], bad)  # whole and verified, but no mesh MuJoCo accepts
+    store.put("model/obj", *digest, bad)  # whole and verified, but no mesh MuJoCo accepts
     with pytest.raises(ValueError, match="face"), use_stored_meshes(spec := mesh_spec([obj]), store):
         spec.compile()
     spec = mesh_spec([obj])
@@ -304,6 +309,16 @@ def test_the_same_content_at_another_path_is_found_without_decoding(store: MeshS
     assert stored == [str(copy)]
 
 
+def test_a_new_file_of_a_size_no_entry_has_is_not_hashed(store: MeshStore, tmp_path: Path) -> None:
+    known = write_obj(tmp_path / "known.obj")
+    fill(mesh_spec([known]), store)
+    records = sorted(store.directory.glob("*.src"))
+    new = write_stl(tmp_path / "new.stl")
+    _, swap = compile_from(mesh_spec([known, new]), store)
+    assert swap.stored == [str(known)] and swap.missing == [(str(new), "model/stl")]
+    assert sorted(store.directory.glob("*.src")) == records  # hashing would have recorded it
+
+
 def test_an_edited_mesh_is_a_miss_and_a_file_edited_a_moment_ago_is_not_stored(
     store: MeshStore, tmp_path: Path
 ) -> None:
@@ -328,8 +343,8 @@ def test_a_flipped_byte_anywhere_in_an_entry_is_a_miss_and_removes_it(
     fill(mesh_spec([obj]), store)
     (entry,) = store.directory.glob("*.msh")
     whole = entry.read_bytes()
-    digest = store.digest(str(obj))
-    assert digest is not None and store.get("model/obj", digest[0]) == whole[len(MAGIC) + 32 :]
+    digest = identity(store, obj)
+    assert store.get("model/obj", *digest) == whole[len(MAGIC) + 32 :]
     positions = sorted(
         {0, 7, 8, 39, 40, 41, 44, 55, len(whole) // 2, len(whole) - 1} | set(range(0, len(whole), 997))
     )
@@ -337,11 +352,11 @@ def test_a_flipped_byte_anywhere_in_an_entry_is_a_miss_and_removes_it(
         damaged = bytearray(whole)
         damaged[position] ^= 0x01
         entry.write_bytes(damaged)
-        assert store.get("model/obj", digest[0]) is None, position
+        assert store.get("model/obj", *digest) is None, position
         assert not entry.exists()
     for cut in (0, 20, len(whole) - 1):
         entry.write_bytes(whole[:cut])
-        assert store.get("model/obj", digest[0]) is None
+        assert store.get("model/obj", *digest) is None
     model, swap = compile_from(mesh_spec([obj]), store)
     assert swap.missing == [(str(obj), "model/obj")]
     assert differences(model, mesh_spec([obj]).compile())[0] == []
@@ -485,19 +500,19 @@ def test_stale_claims_and_temporary_files_are_removed_and_a_fresh_claim_holds(
     store: MeshStore, tmp_path: Path
 ) -> None:
     obj = write_obj(tmp_path / "sphere.obj")
-    digest = hashlib.blake2b(obj.read_bytes(), digest_size=32).hexdigest()
-    claim = store.claim("model/obj", digest)
-    assert claim is not None and store.claim("model/obj", digest) is None
+    digest = (hashlib.blake2b(obj.read_bytes(), digest_size=32).hexdigest(), obj.stat().st_size)
+    claim = store.claim("model/obj", *digest)
+    assert claim is not None and store.claim("model/obj", *digest) is None
     fill(mesh_spec([obj]), store)
-    assert not store.has("model/obj", digest)  # another process holds the claim
-    stale = store.directory / f".{'0' * 40}.msh.abc123.tmp"
+    assert not store.has("model/obj", *digest)  # another process holds the claim
+    stale = store.directory / f".123-{'0' * 40}.msh.abc123.tmp"
     stale.write_bytes(b"half")
     notes = store.directory / "notes.txt"
     notes.write_text("not the store's")
     for path in (claim, stale, notes):
         os.utime(path, (time.time() - 3600,) * 2)
     fill(mesh_spec([obj]), store)  # the claim is old: taken over
-    assert store.has("model/obj", digest) and not claim.exists() and not stale.exists() and notes.exists()
+    assert store.has("model/obj", *digest) and not claim.exists() and not stale.exists() and notes.exists()
     assert store.clear().entries == 1 and [path.name for path in store.directory.iterdir()] == ["notes.txt"]
 
 

@@ -27,13 +27,13 @@ def fill_one(store: MeshStore, path: str, kind: str) -> bool:
     if found is None or not settled(found[1]):
         return False
     digest, stat = found
-    if store.has(kind, digest):
+    if store.has(kind, digest, stat[0]):
         return False
-    claim = store.claim(kind, digest)
+    claim = store.claim(kind, digest, stat[0])
     if claim is None:
         return False  # another process is decoding it
     try:
-        if store.has(kind, digest):
+        if store.has(kind, digest, stat[0]):
             return False  # stored by the claim's previous holder between our two looks
         try:
             payload = decode(path)
@@ -41,7 +41,7 @@ def fill_one(store: MeshStore, path: str, kind: str) -> bool:
             return False
         with contextlib.suppress(OSError):
             if file_stat(path) == stat:
-                store.put(kind, digest, payload or b"")
+                store.put(kind, digest, stat[0], payload or b"")
                 return True
         return False
     finally:

@@ -13,7 +13,7 @@ is given to MuJoCo as its stored ``.msh`` bytes, in memory under the mesh's own 
 model is identical to one compiled from the files. On leaving the block the spec is as it was, and
 the files that were not in the store are handed to a background process that decodes and stores
 them (:mod:`assembler.cache.mesh_fill`): MuJoCo has just decoded them for this compile, so the first
-contact costs this process nothing more than hashing them, and the next process finds them.
+contact costs this process a stat per file, and the next process finds them.
 
 A compile that fails with stored meshes is run once more from the files, so the store can never
 turn a model that compiles into an error (the error a user sees is the files' own).
@@ -34,7 +34,7 @@ from typing import TypeVar
 import mujoco
 
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, mesh_kind, msh_supported
-from assembler.cache.meshes import MeshStore, default_mesh_store
+from assembler.cache.meshes import MeshStore, default_mesh_store, file_stat
 
 Mesh = tuple[str, str]
 """(absolute file path, decoder content type) of a mesh file."""
@@ -84,13 +84,24 @@ class MeshSwap:
             store_meshes(self.missing, self.store)
 
 
-def _look_up(store: MeshStore, mesh: Mesh) -> bytes | None:
+def _look_up(store: MeshStore, mesh: Mesh, sizes: set[int]) -> bytes | None:
     """The stored bytes of ``mesh`` (empty: MuJoCo reads the file), _MISSING, or None when the
-    file cannot be read steadily (the compile reports a missing file its own way)."""
-    found = store.digest(mesh[0])
-    if found is None:
+    file cannot be read steadily (the compile reports a missing file its own way). A file with
+    no record is hashed only if an entry of its size exists: a new mesh costs a stat, not a hash."""
+    path, kind = mesh
+    try:
+        stat = file_stat(path)
+    except OSError:
         return None
-    payload = store.get(mesh[1], found[0])
+    digest = store.recorded(path, stat)
+    if digest is None:
+        if stat[0] not in sizes:
+            return _MISSING
+        found = store.digest(path)
+        if found is None:
+            return None
+        digest, stat = found
+    payload = store.get(kind, digest, stat[0])
     return _MISSING if payload is None else payload
 
 
@@ -122,11 +133,12 @@ def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> Me
         return swap
     assets = dict(spec.assets)
     meshes = {mesh: users for mesh, users in _swappable(spec).items() if mesh[0] not in assets}
+    sizes = store.sizes() if meshes else set()
     if len(meshes) > 1:
         with ThreadPoolExecutor(min(4, os.cpu_count() or 1)) as pool:  # hashing releases the GIL
-            found = list(pool.map(lambda mesh: _look_up(store, mesh), meshes))
+            found = list(pool.map(lambda mesh: _look_up(store, mesh, sizes), meshes))
     else:
-        found = [_look_up(store, mesh) for mesh in meshes]
+        found = [_look_up(store, mesh, sizes) for mesh in meshes]
     added: dict[str, bytes] = {}
     for (mesh, users), payload in zip(meshes.items(), found, strict=True):
         if payload is _MISSING:

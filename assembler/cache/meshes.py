@@ -4,10 +4,11 @@ process decodes the same OBJ or STL twice (the folder ``meshes/`` in the cache f
 Two kinds of file, both small enough to write whole and move into place with one rename, so a
 reader sees a whole file or none, whichever processes write at once:
 
-- ``<key>.msh``, an entry: the ``.msh`` bytes (:mod:`assembler.cache.mesh_data`) behind a magic
-  word and a BLAKE2b digest of the key and the bytes. The key is a digest of the source file's
-  BLAKE2b (:func:`assembler.cache.dependencies.content_digest`), its decoder and MuJoCo's version:
-  the same content anywhere on disk is one entry, and another MuJoCo decodes again. An entry that
+- ``<size>-<key>.msh``, an entry: the ``.msh`` bytes (:mod:`assembler.cache.mesh_data`) behind a
+  magic word and a BLAKE2b digest of the key and the bytes. The key is a digest of the source
+  file's BLAKE2b (:func:`assembler.cache.dependencies.content_digest`), its decoder and MuJoCo's
+  version: the same content anywhere on disk is one entry, and another MuJoCo decodes again. The
+  source's size in the name lets a lookup skip hashing a file no entry can match (a new mesh). An entry that
   fails its digest (a flipped byte, a truncated write) is a miss and is removed, never a wrong
   mesh. An empty payload records a mesh without an exact ``.msh`` form: MuJoCo reads that file.
 - ``<hash of path>.src``, a record: a file's digest with its size, modification and change times
@@ -50,7 +51,8 @@ CHECK_BYTES = 32
 GRACE_SECONDS = 600.0
 """Temporary files and claims younger than this may belong to a writer still at work."""
 
-_OWN_FILE = re.compile(r"^(\.?[0-9a-f]{40}\.(msh|src)(\.\w+\.tmp)?|[0-9a-f]{40}\.claim)$")
+_OWN_FILE = re.compile(r"^\.?(\d+-[0-9a-f]{40}\.(msh|claim)|[0-9a-f]{40}\.src)(\.\w+\.tmp)?$")
+_ENTRY = re.compile(r"^(\d+)-[0-9a-f]{40}\.msh$")
 
 Stat = tuple[int, int, int, int]
 """(size, mtime_ns, ctime_ns, inode): what says a file is unchanged."""
@@ -95,9 +97,17 @@ class MeshStore:
 
     @staticmethod
     def key(kind: str, digest: str) -> str:
-        """The entry name of a file with content ``digest`` read by the decoder ``kind``."""
+        """The key of a file with content ``digest`` read by the decoder ``kind``."""
         text = f"{FORMAT}\0{mujoco.__version__}\0{sys.byteorder}\0{kind}\0{digest}"
         return hashlib.blake2b(text.encode(), digest_size=20).hexdigest()
+
+    def sizes(self) -> set[int]:
+        """The source sizes of the stored entries: a file of another size cannot be stored."""
+        try:
+            with os.scandir(self.directory) as entries:
+                return {int(match[1]) for item in entries if (match := _ENTRY.match(item.name))}
+        except OSError:
+            return set()
 
     # ----- records: path -> digest ------------------------------------------------------
 
@@ -148,11 +158,11 @@ class MeshStore:
 
     # ----- entries: key -> .msh bytes -----------------------------------------------------
 
-    def get(self, kind: str, digest: str) -> bytes | None:
-        """The stored ``.msh`` bytes (empty: no exact ``.msh`` form), or None on a miss. An entry
-        that fails its check is removed."""
+    def get(self, kind: str, digest: str, size: int) -> bytes | None:
+        """The stored ``.msh`` bytes of the ``size``-byte file with content ``digest`` (empty: it
+        has no exact ``.msh`` form), or None on a miss. An entry that fails its check is removed."""
         key = self.key(kind, digest)
-        name = key + ".msh"
+        name = f"{size}-{key}.msh"
         try:
             with open(self.directory / name, "rb") as stream:
                 head = stream.read(len(MAGIC) + CHECK_BYTES)
@@ -165,20 +175,20 @@ class MeshStore:
         self._touch(name)
         return payload
 
-    def has(self, kind: str, digest: str) -> bool:
-        """True when a whole entry is stored (its check is left to :meth:`get`)."""
-        return (self.directory / (self.key(kind, digest) + ".msh")).is_file()
+    def has(self, kind: str, digest: str, size: int) -> bool:
+        """True when an entry is stored (its check is left to :meth:`get`)."""
+        return (self.directory / f"{size}-{self.key(kind, digest)}.msh").is_file()
 
-    def put(self, kind: str, digest: str, payload: bytes) -> None:
-        """Store ``payload`` for the file with content ``digest``."""
+    def put(self, kind: str, digest: str, size: int, payload: bytes) -> None:
+        """Store ``payload`` for the ``size``-byte file with content ``digest``."""
         key = self.key(kind, digest)
-        self._write(key + ".msh", MAGIC + _check(key.encode(), payload) + payload)
+        self._write(f"{size}-{key}.msh", MAGIC + _check(key.encode(), payload) + payload)
 
-    def claim(self, kind: str, digest: str) -> Path | None:
+    def claim(self, kind: str, digest: str, size: int) -> Path | None:
         """Take the right to decode this file (None: another process holds it), so two processes
         seeing a new mesh at once do not both decode it. A claim older than GRACE_SECONDS is
         taken over: its holder died."""
-        path = self.directory / (self.key(kind, digest) + ".claim")
+        path = self.directory / f"{size}-{self.key(kind, digest)}.claim"
         for _ in range(2):
             try:
                 self.directory.mkdir(parents=True, exist_ok=True)
