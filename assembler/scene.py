@@ -16,6 +16,7 @@ import mujoco
 import numpy as np
 
 from assembler.assembly import assemble
+from assembler.cache.mesh_swap import compile_from_store
 from assembler.catalog import register_specs
 from assembler.documents import SPEC_SUFFIXES, LocatedDocument, Override, read_validated
 from assembler.documents.validation import reading_order
@@ -54,7 +55,7 @@ class Scene:
         home: dict[str, float] = {}
         for robot in self.robots:
             home.update(robot.assembly_home())
-        return compile_with_home(self.mjspec, home, f"scene '{self.spec.name}'")
+        return compile_with_home(self.mjspec, home, f"scene '{self.spec.name}'", compile_from_store)
 
 
 def robot_reference(reference: str, folder: Path | None = None) -> str:

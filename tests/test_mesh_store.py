@@ -31,6 +31,7 @@ from assembler.cache.mesh_swap import (
     wait_for_fillers,
 )
 from assembler.cache.meshes import MAGIC, MeshStore, default_mesh_store
+from assembler.mjcf.versions import mujoco_at_least
 from assembler.paths import package_root
 
 HAS_ROBOSUITE = package_root("robosuite") is not None
@@ -204,9 +205,9 @@ def fill(spec: mujoco.MjSpec, store: MeshStore) -> None:
 @pytest.mark.parametrize("name", ["Panda", "GR1"])
 def test_a_robosuite_robot_compiles_identically_from_stored_meshes(name: str, store: MeshStore) -> None:
     robot = assembler.assemble(name)
-    reference = robot._new_assembly().compile()
-    fill(robot._new_assembly(), store)
-    spec = robot._new_assembly()
+    reference = robot.build_mjspec().compile()
+    fill(robot.build_mjspec(), store)
+    spec = robot.build_mjspec()
     files = {mesh.file for mesh in spec.meshes if mesh.file.lower().endswith((".obj", ".stl"))}
     ours, stored = compile_with_store(spec, store)
     assert sorted(stored) == sorted(files)
@@ -241,7 +242,9 @@ def test_every_mesh_attribute_applies_to_a_stored_mesh_as_to_its_file(
     reference = mesh_spec(files, **attributes).compile()
     fill(mesh_spec(files, **attributes), store)
     ours, stored = compile_with_store(mesh_spec(files, **attributes), store)
-    assert len(stored) == len(files)
+    mirrored = any(value < 0 for value in attributes.get("scale", [1.0]))  # type: ignore[attr-defined]
+    # Before MuJoCo 4.0 a mirrored mesh read as .msh is processed slightly differently: read from its file.
+    assert len(stored) == (0 if mirrored and not mujoco_at_least(4, 0) else len(files))
     assert differences(ours, reference)[0] == []
 
 

@@ -19,9 +19,10 @@ from assembler.cache.service import (
     compile_model,
     counts,
     default_store,
+    wait_for_writes,
 )
 from assembler.cache.settings import cache_dir, cache_disabled
-from assembler.cache.store import CacheInfo, ModelStore, wait_for_writes
+from assembler.cache.store import CacheInfo, ModelStore
 
 __all__ = [
     "Assembly",

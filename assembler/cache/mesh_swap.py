@@ -34,7 +34,9 @@ from typing import TypeVar
 import mujoco
 
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, mesh_kind, msh_supported
+from assembler.cache.mesh_fill import fill
 from assembler.cache.meshes import MeshStore, default_mesh_store, file_stat
+from assembler.mjcf.versions import mujoco_at_least
 
 Mesh = tuple[str, str]
 """(absolute file path, decoder content type) of a mesh file."""
@@ -109,7 +111,7 @@ def _swappable(spec: mujoco.MjSpec) -> dict[Mesh, list[mujoco.MjsMesh]]:
     """The spec's meshes by file, for files every mesh reads through the same decoder."""
     by_path: dict[str, list[mujoco.MjsMesh]] = {}
     for mesh in spec.meshes:
-        if mesh.file:
+        if mesh.file and not _mirrored_before_4(mesh):
             by_path.setdefault(mesh.file, []).append(mesh)
     found: dict[Mesh, list[mujoco.MjsMesh]] = {}
     for path, meshes in by_path.items():
@@ -117,6 +119,12 @@ def _swappable(spec: mujoco.MjSpec) -> dict[Mesh, list[mujoco.MjsMesh]]:
         if len(kinds) == 1 and (kind := kinds.pop()) is not None:
             found[(path, kind)] = meshes
     return found
+
+
+def _mirrored_before_4(mesh: mujoco.MjsMesh) -> bool:
+    """A mirrored mesh (a negative scale) on MuJoCo before 4.0, which processes one decoded from a
+    file and one read as ``.msh`` slightly differently (measured on 3.9 to 3.17): read from its file."""
+    return not mujoco_at_least(4, 0) and any(value < 0 for value in mesh.scale)
 
 
 def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> MeshSwap:
@@ -171,13 +179,16 @@ def compile_with_stored_meshes(
     return compile_spec()
 
 
+def compile_from_store(spec: mujoco.MjSpec) -> mujoco.MjModel:
+    """``spec.compile()`` with stored meshes (see :func:`compile_with_stored_meshes`)."""
+    return compile_with_stored_meshes(spec, spec.compile)
+
+
 def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = True) -> None:
     """Decode ``meshes`` and keep them in ``store``: in a process of its own that outlives this
     one (lowered priority, output discarded), or here and now with ``background=False``."""
     meshes = list(meshes)
     if not background:
-        from assembler.cache.mesh_fill import fill
-
         fill(store, meshes)
         return
     meshes = [mesh for mesh in meshes if (str(store.directory), mesh) not in _handed]

@@ -20,9 +20,12 @@ from assembler.cache.dependencies import Recorder, asset_files
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
+from assembler.cache.mesh_swap import compile_from_store, wait_for_fillers
+from assembler.cache.meshes import MESH_SHARE, default_mesh_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import CacheInfo, ModelStore
-from assembler.mjcf.keyframe import Keyframe, compile_with_home
+from assembler.cache.store import wait_for_writes as wait_for_entries
+from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
 
 
 @dataclass(frozen=True)
@@ -73,19 +76,34 @@ _recent = RecentModels()
 
 
 def default_store() -> ModelStore:
-    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``)."""
-    return ModelStore(cache_dir(), max_bytes())
+    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``):
+    compiled models get the bound less the mesh store's share."""
+    bound = max_bytes()
+    return ModelStore(cache_dir(), bound - bound // MESH_SHARE)
 
 
 def clear(store: ModelStore) -> CacheInfo:
-    """Empty ``store``, and forget the models this process kept from it; returns what was there."""
+    """Empty ``store`` and the mesh store beside it, and forget the models this process kept from
+    it; returns what the model store held (and what could not be removed)."""
     _recent.forget(str(store.directory))
+    meshes = default_mesh_store()
+    if meshes is not None and meshes.directory.parent == store.directory:
+        meshes.clear()
     return store.clear()
 
 
-def compile_assembly(assembly: Assembly) -> CompiledModel:
-    """Compile ``assembly`` with its ``home`` keyframe (written into its spec too); no cache."""
-    model = compile_with_home(assembly.mjspec, assembly.home, assembly.what)
+def wait_for_writes() -> None:
+    """Block until every cache entry and decoded mesh this process started writing is in place
+    (tests, benchmarks); the interpreter waits for entries at exit by itself, not for mesh fillers."""
+    wait_for_entries()
+    wait_for_fillers()
+
+
+def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
+    """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
+    decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
+    compile = compile_from_store if meshes else compile_spec
+    model = compile_with_home(assembly.mjspec, assembly.home, assembly.what, compile)
     return CompiledModel(model, Keyframe.of(model))
 
 
@@ -100,7 +118,7 @@ def compile_model(
     key = cache_key(inputs) if cache and not cache_disabled() else None
     if key is None:
         counts.bypassed += 1
-        return compile_assembly(build())
+        return compile_assembly(build(), meshes=cache)
     keep = store
     models = default_store()
     place = (str(models.directory), key)

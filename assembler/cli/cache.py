@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 
 from assembler.cache import cache_disabled, clear, default_store
-from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size
+from assembler.cache.meshes import default_mesh_store
+from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.cli.common import table
 from assembler.errors import AssemblerError
 from assembler.paths import display_path
@@ -31,11 +32,17 @@ def run(args: argparse.Namespace) -> int:
         status = f"disabled ({DISABLE_VARIABLE} is set)"
     else:
         status = f"unusable: {info.problem}" if info.problem else "enabled"
+    meshes = default_mesh_store()
+    mesh_info = meshes.info() if meshes is not None else None
     rows = [
         ("location", display_path(info.directory)),
         ("entries", str(info.entries)),
         ("size", format_size(info.total_bytes)),
-        ("limit", f"{format_size(info.max_bytes)} ({MAX_BYTES_VARIABLE})"),
+        (
+            "meshes",
+            f"{mesh_info.entries} decoded ({format_size(mesh_info.total_bytes)})" if mesh_info else "-",
+        ),
+        ("limit", f"{format_size(max_bytes())} ({MAX_BYTES_VARIABLE}), models and meshes together"),
         ("status", status),
     ]
     print(table(rows))

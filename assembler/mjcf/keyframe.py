@@ -8,7 +8,7 @@ control that holds them there. The result is written back to the spec so emitted
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import mujoco
@@ -74,12 +74,24 @@ def home_control(model: mujoco.MjModel, qpos: FloatArray) -> FloatArray:
     return ctrl
 
 
-def compile_with_home(spec: mujoco.MjSpec, home: Mapping[str, float], what: str) -> mujoco.MjModel:
-    """Compile ``spec`` with a ``home`` keyframe at the given joint positions (others at qpos0)."""
+Compiler = Callable[[mujoco.MjSpec], mujoco.MjModel]
+"""How a spec is compiled: MuJoCo's own compile, or one reading stored meshes (assembler.cache)."""
+
+
+def compile_spec(spec: mujoco.MjSpec) -> mujoco.MjModel:
+    """MuJoCo's compile of ``spec``, reading every file."""
+    return spec.compile()
+
+
+def compile_with_home(
+    spec: mujoco.MjSpec, home: Mapping[str, float], what: str, compile: Compiler = compile_spec
+) -> mujoco.MjModel:
+    """Compile ``spec`` (with ``compile``) with a ``home`` keyframe at the given joint positions
+    (others at qpos0)."""
     key = _home_key(spec)
     try:
         with mujoco_warnings.warned(what):
-            model = spec.compile()
+            model = compile(spec)
     except ValueError as error:
         message = " ".join(str(error).split()).removeprefix("Error: ")
         raise MjcfError(f"{what}: MuJoCo cannot compile the assembly: {message}") from None

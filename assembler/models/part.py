@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.inputs import JointEdit, PartInputs
+from assembler.cache.mesh_swap import compile_from_store
 from assembler.documents import LoadedSpec
 from assembler.documents.validation import reading_order
 from assembler.errors import Location, MjcfError, Problem, SpecError
@@ -162,7 +163,7 @@ class PartModel(metaclass=RegisteringMeta):
         self.complete_alone(assembly)
         what = f"building {self.family} '{type(self).__name__}' alone"
         census.require_at_least(census.of_spec(assembly), census.of_spec(self.prepared_mjspec), what)
-        return compile_with_home(assembly, self.home_qpos(), self.describe())
+        return compile_with_home(assembly, self.home_qpos(), self.describe(), compile_from_store)
 
     def complete_alone(self, assembly: mujoco.MjSpec) -> None:
         """What a part needs around it to compile on its own; nothing for most parts."""

@@ -16,6 +16,7 @@ import mujoco
 import numpy as np
 
 from assembler.cache.inputs import BuildInputs, JointEdit
+from assembler.cache.mesh_swap import compile_from_store
 from assembler.cache.service import Assembly, compile_model
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.fieldpath import FieldPath
@@ -23,7 +24,7 @@ from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.emit import to_xml
 from assembler.mjcf.joints import set_joint_attribute_value
-from assembler.mjcf.keyframe import Keyframe, compile_with_home
+from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
 from assembler.models.bases import RobotBaseModel
 from assembler.models.joint_rules import JointValue
 from assembler.models.part import FloatArray, PartModel
@@ -307,7 +308,8 @@ class RobotModel(PartModel):
         robot comes from the compiled-model cache unless ``cache`` is False, and a compiled one is
         kept there unless ``store`` is False."""
         if self._mjspec is not None:
-            return compile_with_home(self._mjspec, self.assembly_home(), self.describe())
+            compile = compile_from_store if cache else compile_spec
+            return compile_with_home(self._mjspec, self.assembly_home(), self.describe(), compile)
         compiled = compile_model(self.build_inputs(), self._assembly, cache=cache, store=store)
         self._keyframe = compiled.keyframe
         return compiled.model

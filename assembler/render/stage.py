@@ -14,6 +14,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.cache.mesh_swap import compile_from_store
 from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
 from assembler.models import RobotModel
 
@@ -117,7 +118,9 @@ def build_stage(robot: RobotModel, width: int, height: int) -> Stage:
     spec.visual.global_.offwidth = max(width, spec.visual.global_.offwidth)
     spec.visual.global_.offheight = max(height, spec.visual.global_.offheight)
     _add_scenery(spec)
-    model = compile_with_home(spec, robot.assembly_home(), f"robot '{type(robot).__name__}'")
+    model = compile_with_home(
+        spec, robot.assembly_home(), f"robot '{type(robot).__name__}'", compile_from_store
+    )
     _hide_collision_geoms(model)
     data = mujoco.MjData(model)
     mujoco.mj_resetDataKeyframe(model, data, model.key(HOME_KEY).id)
