@@ -16,6 +16,7 @@ from assembler.schema.expressions import (
 )
 from assembler.schema.joints import JointDefaults
 from assembler.schema.parts import Name, PartSpec
+from assembler.schema.robosuite import RobosuiteOptions
 
 Morphology = Literal["manipulator", "legged_manipulator", "humanoid", "humanoid_upper_body"]
 Arm = Literal["right", "left"]
@@ -114,6 +115,9 @@ class RobotSpec(PartSpec):
 
     default_controller_config: dict[str, str] = Field(default_factory=dict)
     """Controller config name per body part (e.g. right: default_panda), for controller libraries."""
+
+    robosuite: RobosuiteOptions = Field(default_factory=RobosuiteOptions)
+    """How the robot enters robosuite's environments; every field has a default by morphology."""
 
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
     """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length."""
