@@ -1,6 +1,6 @@
 """The parity cases: every robosuite robot with its defaults, every gripper on every robot, every base
 on five arms, and what a user does afterwards (another idn, placement, joint attributes); and, for
-each case, the exact differences robosuite's mistakes cause (docs/robosuite-parity.md, D1-D5).
+each case, the exact differences robosuite's mistakes cause (docs/robosuite-parity.md, D1-D5; D6 has its own test).
 """
 
 from __future__ import annotations
