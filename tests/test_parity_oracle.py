@@ -77,6 +77,17 @@ def _integrator_with_actrange(spec: mujoco.MjSpec) -> None:
     actuator.dyntype, actuator.actlimited, actuator.actrange = mujoco.mjtDyn.mjDYN_INTEGRATOR, 1, [-1, 1]
 
 
+def _reparent_eef(spec: mujoco.MjSpec) -> None:
+    """Move the gripper's eef body from the gripper's root onto the robot's hand (MjSpec has no
+    re-parenting: attach a copy, delete the original, then restore the copy's names)."""
+    spec.copy_during_attach = True
+    old = spec.body("gripper0_right_eef")
+    copy = spec.body("robot0_right_hand").add_frame().attach_body(old, "moved_", "")
+    spec.delete(old)
+    for element in [copy, *copy.find_all(mujoco.mjtObj.mjOBJ_SITE)]:
+        element.name = element.name.removeprefix("moved_")
+
+
 def _swap_first_joints(spec: mujoco.MjSpec) -> None:
     """Move the mobile base's first joint after its others (MjSpec has no reorder: re-add it)."""
     body = spec.joint("mobilebase0_joint_mobile_forward").parent
@@ -121,6 +132,7 @@ MUTATIONS = [
         setter("body", "gripper0_right_eef", "quat", [0, 1, 0, 0]),
         also=frozenset({"site"}),
     ),
+    Mutation("body gripper0_right_eef: parent", _reparent_eef, also=frozenset({"site"})),
     Mutation("joint robot0_joint3: axis", setter("joint", "robot0_joint3", "axis", [0, 1, 0])),
     Mutation("joint robot0_joint3: anchor", setter("joint", "robot0_joint3", "pos", [0, 0, 0.01])),
     Mutation("joint robot0_joint3: stiffness", joint_value("stiffness", 5.0)),
