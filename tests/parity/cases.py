@@ -49,6 +49,21 @@ GR1FloatingBody, where robosuite's ``set_joint_attribute`` fails: D6, test_parit
 ALL = DEFAULTS + WITH_GRIPPERS + ON_BASES + IN_USE
 
 
+def _same_assembly(case: Case) -> tuple[object, ...]:
+    robot = assembler.REGISTERED_ROBOTS[case.robot].spec
+    grippers = tuple(case.gripper or robot.default_grippers.get(arm) for arm in robot.arms)
+    return (case.robot, case.base_name, grippers, case.idn, case.xpos, case.ori, case.joint_attribute)
+
+
+def same_assemblies(cases: list[Case]) -> list[list[Case]]:
+    """The cases grouped by what they assemble (by our defaults), in order of first appearance:
+    Panda, Panda with PandaGripper and Panda on RethinkMount are one group, one robosuite compile."""
+    groups: dict[tuple[object, ...], list[Case]] = {}
+    for case in cases:
+        groups.setdefault(_same_assembly(case), []).append(case)
+    return list(groups.values())
+
+
 def mount(case: Case) -> str:
     return f"robot{case.idn}_manipulator_mount"
 

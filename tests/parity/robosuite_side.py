@@ -6,7 +6,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from functools import lru_cache
 from typing import Any
 
 import mujoco
@@ -68,13 +67,13 @@ def _placed(case: Case) -> tuple[Any, dict[str, Any]]:
 
 
 def build_reference(case: Case) -> Reference:
-    """robosuite's compiled model of the case and the keyframe robosuite's reset implies; compiled
-    once per process for cases that assemble the same thing (e.g. Panda and Panda+PandaGripper)."""
-    return _build_reference(_normalized(case))
+    """robosuite's compiled model of the case and the keyframe robosuite's reset implies."""
+    return build_edited_reference(case, None)
 
 
-def _normalized(case: Case) -> Case:
-    """The case with its defaults spelled out, so that equal assemblies compare equal."""
+def normalized(case: Case) -> Case:
+    """The case with robosuite's defaults spelled out: cases equal after this assemble the same
+    model in robosuite (e.g. Panda, and Panda with PandaGripper), so one compile serves them all."""
     from robosuite.models.robots import create_robot
 
     defaults = create_robot(case.robot, idn=case.idn)
@@ -83,14 +82,9 @@ def _normalized(case: Case) -> Case:
     return replace(case, base=defaults.default_base if case.base == DEFAULT else case.base, gripper=gripper)
 
 
-@lru_cache(maxsize=16)
-def _build_reference(case: Case) -> Reference:
-    return build_edited_reference(case, None)
-
-
 def build_edited_reference(case: Case, edit: Callable[[Any], object] | None) -> Reference:
     """:func:`build_reference`, with ``edit`` changing robosuite's RobotModel (its XML tree) before
-    it is compiled (the oracle's own tests); never cached."""
+    it is compiled (the oracle's own tests)."""
     robot, grippers = _placed(case)
     if edit is not None:
         edit(robot)
