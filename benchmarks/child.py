@@ -99,7 +99,7 @@ def robosuite_cold(name: str) -> dict[str, Any]:
     """robosuite's load of a robot in a new process: assemble its XML, then MuJoCo compiles it."""
     import mujoco
 
-    from tests.robosuite_reference import robosuite_xml
+    from tests.parity.robosuite_side import robosuite_xml
 
     xml, assemble = _timed(lambda: robosuite_xml(name))
     _, compile_seconds = _timed(lambda: mujoco.MjModel.from_xml_string(xml))

@@ -14,7 +14,7 @@ import assembler
 from assembler import cache
 from assembler.mjcf.emit import to_xml
 from benchmarks.figures import Figure, ratio_figure
-from tests.robosuite_reference import robosuite_xml
+from tests.parity.robosuite_side import robosuite_xml
 
 ASSEMBLE_TARGET = 0.5
 REPEATED_TARGET = 1.2

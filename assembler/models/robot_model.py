@@ -39,9 +39,10 @@ REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
 
 
 def euler_to_quat(rpy: FloatArray) -> FloatArray:
-    """(w, x, y, z) of the rotation Rz(yaw) Ry(pitch) Rx(roll), robosuite's ``set_base_ori`` convention."""
+    """(w, x, y, z) of the rotation Rx(roll) Ry(pitch) Rz(yaw): robosuite's ``set_base_ori`` goes through
+    ``transform_utils.euler2mat``, which builds that product (rotations about the moving x, y', z'')."""
     quat = np.zeros(4)
-    mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "XYZ")
+    mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "xyz")
     return quat
 
 
@@ -247,7 +248,7 @@ class RobotModel(PartModel):
             self._apply_placement(self._mjspec)
 
     def set_base_ori(self, rot: FloatArray) -> None:
-        """Orient the robot by (roll, pitch, yaw) in radians, rotating about fixed x, y, z axes."""
+        """Orient the robot by (roll, pitch, yaw) in radians as robosuite does: Rx(roll) Ry(pitch) Rz(yaw)."""
         angles = np.asarray(rot, dtype=float)
         if angles.shape != (3,) or not np.all(np.isfinite(angles)):
             raise AssemblerError(f"set_base_ori: expected 3 finite angles, got {rot!r}")
