@@ -20,7 +20,7 @@ ROBOSUITE = "package://robosuite/"
 
 
 def _robosuite_names(registry: dict[str, type[assembler.models.PartModel]]) -> list[str]:
-    return sorted(name for name, cls in registry.items() if cls.spec.mjcf.startswith(ROBOSUITE))
+    return sorted(name for name, cls in registry.items() if cls.spec.source_file.startswith(ROBOSUITE))
 
 
 ROBOTS = _robosuite_names(assembler.REGISTERED_ROBOTS)
