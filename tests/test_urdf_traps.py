@@ -16,12 +16,14 @@ import numpy as np
 import pytest
 
 import assembler
+from assembler.cli import main
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError
 from assembler.models import RobotModel
-from assembler.paths import allowing
+from assembler.paths import allowing, shipped_specs_dir
 from assembler.urdf import load_urdf
 from assembler.urdf.document import read_urdf
 from assembler.urdf.meshes import converted_dir, converter_available, importable
+from assembler.urdf.packages import package_folders
 from assembler.urdf.postprocess import add_mimics
 from tests.urdf_fixtures import ARM_URDF, line_of, write_package
 
@@ -364,3 +366,23 @@ def _write(path: Path, text: str) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
     return path
+
+
+@pytest.mark.skipif(
+    bool(package_folders("example-robot-data")),
+    reason="example-robot-data is installed: this shows validate and list without the urdf extra",
+)
+def test_without_the_urdf_extra_the_shipped_urdf_specs_are_unchecked_not_failed(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    assert main(["validate", str(shipped_specs_dir() / "urdf")]) == 0
+    out, err = capsys.readouterr()
+    assert err == (
+        "note: 6 spec(s) checked without their model file (package 'example-robot-data' not found (searched "
+        "ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and the share/ folders of this Python environment); install it "
+        '(pip install "robot-assembler[urdf]"))\n'
+    )
+    assert out.startswith("6 spec(s) valid: ")
+    assert main(["list", "bases"]) == 0
+    (go2,) = [line for line in capsys.readouterr().out.splitlines() if line.startswith("Go2 ")]
+    assert "? (example-robot-data not installed)" in go2
