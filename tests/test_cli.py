@@ -43,7 +43,7 @@ def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureF
     lines = err.splitlines()
     assert len(lines) == 2
     assert (
-        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: actuators, arm_type, balance_inertia, base_xpos_offset,"
+        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: actuators, add_free_joint, arm_type, balance_inertia, base_xpos_offset,"
         in lines[0]
     )
     assert lines[0].endswith(", remove_free_joint, top_offset, urdf")

@@ -15,7 +15,7 @@ import mujoco
 
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
 from assembler.fieldpath import FieldPath
-from assembler.mjcf.added_joints import add_joints
+from assembler.mjcf.added_joints import add_free_joint, add_joints
 from assembler.mjcf.joints import joint_attribute, named_joints
 from assembler.mjcf.removal import remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource
@@ -88,6 +88,12 @@ def prepared_mjspec(
     remove_joints(mjspec, removed)
     if getattr(spec, "remove_free_joint", False):
         remove_free_joints(mjspec)
+    if getattr(spec, "add_free_joint", False):
+        try:
+            add_free_joint(mjspec)
+        except MjcfError as error:
+            path = FieldPath(("add_free_joint",))
+            raise MjcfError([problem(path, p.message) for p in error.problems]) from None
     try:
         add_joints(mjspec, getattr(spec, "added_joints", []))
     except MjcfError as error:

@@ -73,6 +73,8 @@ class PartSpec(StrictModel):
             raise rule_error("mjcf_fixes repair MJCF files; a spec with urdf cannot use them")
         if self.mjcf is not None and self.balance_inertia:
             raise rule_error("balance_inertia applies to URDF files; fix the MJCF's <inertial> instead")
+        if getattr(self, "remove_free_joint", False) and getattr(self, "add_free_joint", False):
+            raise rule_error("give remove_free_joint or add_free_joint, not both")
         return self
 
     @property
