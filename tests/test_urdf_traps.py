@@ -25,7 +25,7 @@ from assembler.urdf.document import read_urdf
 from assembler.urdf.meshes import converted_dir, converter_available, importable
 from assembler.urdf.packages import package_folders
 from assembler.urdf.postprocess import add_mimics
-from tests.urdf_fixtures import ARM_URDF, line_of, write_package
+from tests.urdf_fixtures import ARM_URDF, line_of, write_package, write_stl
 
 STL_LINE = line_of(ARM_URDF, "cube.stl")
 DAE_LINE = line_of(ARM_URDF, "cube.dae")
@@ -221,6 +221,34 @@ def test_a_dae_mesh_is_converted_to_obj_in_metres(tmp_path: Path, package: Path)
         model.mesh_vertadr[mesh[0]] : model.mesh_vertadr[mesh[0]] + model.mesh_vertnum[mesh[0]]
     ]
     assert np.ptp(vertices, axis=0) == pytest.approx([0.1, 0.1, 0.1])  # 100 mm, not 100 m
+
+
+TWIN_MESHES_URDF = """<robot name="twins">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><mesh filename="meshes/visual/link.stl"/></geometry></visual>
+    <collision><geometry><mesh filename="meshes/collision/link.stl"/></geometry></collision>
+  </link>
+</robot>
+"""
+"""A visual and a collision mesh in two files with one name, as vendors' packages lay them out."""
+
+
+def test_two_mesh_files_with_one_name_stay_two_meshes(tmp_path: Path) -> None:
+    # The trap, before MuJoCo 4.0: its import names a mesh after its file's stem and kept one
+    # mesh per name, so the collision geom silently got the visual mesh.
+    write_stl(tmp_path / "meshes" / "visual" / "link.stl", edge=0.1)
+    write_stl(tmp_path / "meshes" / "collision" / "link.stl", edge=0.3)
+    _write(tmp_path / "twins.urdf", TWIN_MESHES_URDF)
+    robot = _robot(tmp_path, "twins.urdf", "name: Twins\nurdf: {urdf}\neef_bodies: {{right: base}}\n")
+    model = robot.get_model()
+    sizes = {}
+    for name in ("robot0_base_visual", "robot0_base_collision"):
+        mesh = model.geom(name).dataid[0]
+        start, count = model.mesh_vertadr[mesh], model.mesh_vertnum[mesh]
+        sizes[name] = np.ptp(model.mesh_vert[start : start + count], axis=0)[0]
+    assert sizes == pytest.approx({"robot0_base_visual": 0.1, "robot0_base_collision": 0.3})
+    assert "1 mesh file(s) whose name another mesh has copied under a distinct name" in robot.source.notes[-1]
 
 
 @NEEDS_CONVERTER

@@ -23,7 +23,7 @@ from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
 from assembler.paths import confine, display_path
-from assembler.urdf.meshes import MeshConversionError, readable_mesh
+from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 
 FORCED_COMPILER: dict[str, str] = {"discardvisual": "false", "fusestatic": "false", "strippath": "false"}
@@ -55,7 +55,9 @@ class UrdfDocument:
     overridden: list[str] = field(default_factory=list)
     """Compiler settings of the URDF itself that we replaced, as ``name="value"``."""
     mesh_files: list[Path] = field(default_factory=list)
-    """Every mesh file read (originals, before conversion) and every converted file."""
+    """Every mesh file read (originals, before conversion) and every converted or renamed copy."""
+    renamed: list[Path] = field(default_factory=list)
+    """Copies of mesh files whose stem another mesh file of the URDF has (see assembler.urdf.meshes)."""
     homes: set[Path] = field(default_factory=set)
     """Folders the meshes were admitted from (package folders found for package:// URIs)."""
     velocity_limits: dict[str, float] = field(default_factory=dict)
@@ -110,6 +112,7 @@ class _Reader:
         self.problems: list[Problem] = []
         self.resolved: dict[str, str] = {}  # filename as written -> file MuJoCo reads
         self.reported: set[str] = set()
+        self.stems: dict[str, Path] = {}  # MuJoCo names a URDF mesh after its file's stem
 
     def problem(self, line: int, message: str) -> None:
         self.problems.append(Problem(f"{self.shown}:{line}: {message}"))
@@ -144,6 +147,9 @@ class _Reader:
         except MeshConversionError as error:
             self.problem(line, str(error))
             return None
+        if self.stems.setdefault(readable.stem, readable) != readable:
+            readable = renamed_copy(readable)
+            document.renamed.append(readable)
         document.mesh_files += [file] if readable == file else [file, readable]
         self.resolved[written] = str(readable)
         return str(readable)

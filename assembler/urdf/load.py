@@ -113,9 +113,15 @@ def _notes(document: UrdfDocument, balanced: list[str]) -> tuple[str, ...]:
         f"<mimic> {m.follower} = {m.multiplier:g} * {m.leader} + {m.offset:g} is a joint equality"
         for m in document.mimics
     ]
-    converted = [file for file in document.mesh_files if file.parent == converted_dir()]
+    made = [file for file in document.mesh_files if file.parent == converted_dir()]
+    converted = [file for file in made if file not in document.renamed]
     if converted:
         notes.append(f"{len(converted)} mesh file(s) converted to OBJ in {display_path(converted_dir())}")
+    if document.renamed:
+        notes.append(
+            f"{len(document.renamed)} mesh file(s) whose name another mesh has copied under a distinct "
+            f"name to {display_path(converted_dir())} (MuJoCo before 4.0 would use one mesh for both)"
+        )
     return tuple(notes)
 
 

@@ -6,6 +6,11 @@ its scene graph's transforms are applied and its unit (``<unit meter>``) is turn
 ROS tools show it. The OBJ is written once into ``<cache folder>/converted-meshes/``, named by the
 source file's content digest, so an edited source gives a new file and concurrent processes
 agree on the name. Without trimesh the file is reported once, with what to install.
+
+MuJoCo's URDF import names each mesh after its file's stem; before MuJoCo 4.0 two files with one
+stem (``visual/link1.stl`` and ``collision/link1.stl``, common in vendors' packages) became one mesh,
+the first, for both geoms, in silence. A second file with a stem already taken is therefore given
+to MuJoCo as a copy named ``<stem>-<digest>`` in the same folder as the conversions.
 """
 
 from __future__ import annotations
@@ -13,8 +18,10 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import os
+import shutil
 import sys
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -62,6 +69,31 @@ def converter_available() -> bool:
     return importable("trimesh")
 
 
+def _digest_name(source: Path, suffix: str) -> Path:
+    return converted_dir() / f"{source.stem}-{_digest(source)}{suffix}"
+
+
+def _write_atomically(target: Path, write: Callable[[str], object]) -> None:
+    """``write(temporary path)``, then the file appears whole under ``target`` (another process sees
+    all of it or nothing)."""
+    target.parent.mkdir(parents=True, exist_ok=True)
+    descriptor, temporary = tempfile.mkstemp(dir=target.parent, suffix=target.suffix + ".tmp")
+    os.close(descriptor)
+    try:
+        write(temporary)
+        os.replace(temporary, target)
+    finally:
+        Path(temporary).unlink(missing_ok=True)
+
+
+def renamed_copy(source: Path) -> Path:
+    """A copy of ``source`` under a name no other mesh has (made once per content)."""
+    target = _digest_name(source, source.suffix)
+    if not target.is_file():
+        _write_atomically(target, lambda temporary: shutil.copyfile(source, temporary))
+    return target
+
+
 def _convert(source: Path, target: Path) -> None:
     import trimesh  # the optional extra: imported only when a mesh needs it
 
@@ -74,15 +106,13 @@ def _convert(source: Path, target: Path) -> None:
     if not scene.geometry:
         raise MeshConversionError(f"{source}: the file holds no triangles; give the link another mesh")
     mesh = scene.to_mesh()
-    target.parent.mkdir(parents=True, exist_ok=True)
-    descriptor, temporary = tempfile.mkstemp(dir=target.parent, suffix=".obj.tmp")
-    os.close(descriptor)
-    try:
-        # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
-        mesh.export(temporary, file_type="obj", include_normals=False, include_texture=False)
-        os.replace(temporary, target)  # atomic: another process sees the whole file or none
-    finally:
-        Path(temporary).unlink(missing_ok=True)
+    # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
+    _write_atomically(
+        target,
+        lambda temporary: mesh.export(
+            temporary, file_type="obj", include_normals=False, include_texture=False
+        ),
+    )
 
 
 def readable_mesh(source: Path) -> Path:
@@ -100,7 +130,7 @@ def readable_mesh(source: Path) -> Path:
             f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
             f"convert it is not installed; {INSTALL_CONVERTER}, or convert it to STL/OBJ yourself"
         )
-    target = converted_dir() / f"{source.stem}-{_digest(source)}.obj"
+    target = _digest_name(source, ".obj")
     if not target.is_file():
         _convert(source, target)
     return target
