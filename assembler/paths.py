@@ -192,7 +192,7 @@ def locate_model_file(reference: str) -> Path:
         if root is None:
             extra = ' (pip install "robot-assembler[robosuite]")' if package == "robosuite" else ""
             raise MissingPackageError(
-                f"{reference}: Python package '{package}' is not installed; install it{extra}"
+                f"{reference}: Python package '{package}' is not installed; install it{extra}", package
             )
         path = root / inner
         if _is_file(path):

@@ -43,10 +43,11 @@ def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureF
     lines = err.splitlines()
     assert len(lines) == 2
     assert (
-        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: arm_type, base_xpos_offset," in lines[0]
+        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: actuators, add_free_joint, arm_type, balance_inertia, base_xpos_offset,"
+        in lines[0]
     )
-    assert lines[0].endswith(", remove_free_joint, top_offset")
-    assert lines[1].endswith("b.yaml:1:1: missing required field 'mjcf'; add it")
+    assert lines[0].endswith(", remove_free_joint, top_offset, urdf")
+    assert lines[1].endswith("b.yaml:1:1: give exactly one of mjcf and urdf (the model file), got neither")
     assert "Traceback" not in err
 
 
@@ -131,7 +132,8 @@ def test_schema_is_json_schema_with_every_field_documented(capsys: pytest.Captur
         "#/$defs/ExperimentSpec",
     ]
     robot = schema["$defs"]["RobotSpec"]
-    assert robot["additionalProperties"] is False and robot["else"]["required"] == ["name", "mjcf"]
+    assert robot["additionalProperties"] is False and robot["else"]["required"] == ["name"]
+    assert robot["else"]["oneOf"] == [{"required": ["mjcf"]}, {"required": ["urdf"]}]
     assert robot["if"] == {"required": ["extends"]} and robot["then"]["required"] == ["name"]  # inherits mjcf
     undocumented = [
         f"{name}.{field}"

@@ -266,7 +266,12 @@ COMMANDS: tuple[Command, ...] = (
         _variants,
         "assembler.cli.variants",
     ),
-    Command("inspect", "joint parameters and where each value came from", _inspect, "assembler.cli.inspect"),
+    Command(
+        "inspect",
+        "joint parameters and actuators, and where each value came from",
+        _inspect,
+        "assembler.cli.inspect",
+    ),
     Command(
         "schema", "print the JSON Schema of spec files (or --markdown docs)", _schema, "assembler.cli.schema"
     ),

@@ -14,8 +14,8 @@ from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED
 def _dof_text(cls: type[PartModel]) -> str:
     try:
         return str(cls(idn=0).dof_joints)
-    except MissingPackageError:
-        return "? (robosuite not installed)"
+    except MissingPackageError as error:
+        return f"? ({error.package or 'a package'} not installed)"
     except AssemblerError:
         return "? (invalid: run assembler validate)"
 

@@ -19,11 +19,9 @@ def run(args: argparse.Namespace) -> int:
     except AssemblerError as error:  # printed in the chosen format (GitHub annotations in CI)
         print_problems(error.problems, args.format)
         return 1
-    if report.unchecked:
-        print(
-            f"note: {len(report.unchecked)} spec(s) checked without their MJCF ({report.missing})",
-            file=sys.stderr,
-        )
+    for missing in report.missing.values():
+        count = len(missing.specs)
+        print(f"note: {count} spec(s) checked without their model file ({missing.message})", file=sys.stderr)
     what = "validated and compiled" if args.compile else "valid"
     print(f"{len(report.classes)} spec(s) {what}: {', '.join(c.__name__ for c in report.classes)}")
     return 0

@@ -20,7 +20,7 @@ from assembler.errors import Problem, SpecError
 from assembler.fieldpath import FieldPath
 from assembler.paths import display_path, resolve_model_path
 
-PATH_FIELDS: tuple[str, ...] = ("mjcf",)
+PATH_FIELDS: tuple[str, ...] = ("mjcf", "urdf")
 """Top-level fields holding file references, resolved against the folder of the file that wrote them."""
 
 M = TypeVar("M", bound=BaseModel)

@@ -106,6 +106,11 @@ def attach_robot_on_support(
     support = find_body(assembly, base_prefix + support_body, "base support body")
 
     move_world_elements(robot, assembly, robot_prefix)
+    for exclude in robot.excludes:  # they name bodies by text: follow the root to its new name
+        if exclude.bodyname1 == root.name:
+            exclude.bodyname1 = MANIPULATOR_MOUNT
+        if exclude.bodyname2 == root.name:
+            exclude.bodyname2 = MANIPULATOR_MOUNT
     root.name = MANIPULATOR_MOUNT
     root.pos = [0.0, 0.0, 0.0]
     root.quat = [1.0, 0.0, 0.0, 0.0]

@@ -14,7 +14,7 @@ ROBOSUITE = "package://robosuite/"
 
 def robosuite_names(registry: dict[str, type[assembler.models.PartModel]]) -> list[str]:
     """The registered parts read from robosuite's package, by name."""
-    return sorted(name for name, cls in registry.items() if cls.spec.mjcf.startswith(ROBOSUITE))
+    return sorted(name for name, cls in registry.items() if cls.spec.source_file.startswith(ROBOSUITE))
 
 
 ROBOTS = robosuite_names(assembler.REGISTERED_ROBOTS)
