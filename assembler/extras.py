@@ -28,12 +28,11 @@ def extra_requirements(extra: str) -> list[str]:
 
 
 def install_hint(package: str) -> str:
-    """How to install a missing package, e.g. `` (pip install robosuite==1.5.2 mujoco==3.9.0: the
-    robosuite extra)``; empty for a package no extra of ours installs."""
+    """How to install a missing package, e.g. `` with pip install robosuite==1.5.2 mujoco==3.9.0 (the
+    robosuite extra; in a clone: pip install ".[robosuite]")``; empty for a package no extra installs."""
     extra = EXTRAS.get(package)
     if extra is None:
         return ""
     requirements = sorted(extra_requirements(extra), key=lambda r: not r.startswith(package)) or [package]
-    return (
-        f' (pip install {" ".join(requirements)}: the {extra} extra; from a clone, pip install ".[{extra}]")'
-    )
+    clone = f'pip install ".[{extra}]"'
+    return f" with pip install {' '.join(requirements)} (the {extra} extra; in a clone: {clone})"

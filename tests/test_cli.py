@@ -251,8 +251,8 @@ def test_validate_counts_the_specs_it_could_not_check_against_their_mjcf(
     assert (code, err) == (0, "")
     assert out.splitlines() == [
         "1 spec(s) validated and compiled: TwoLink",
-        "1 spec(s) valid but not checked against their MJCF nor compiled (Python package "
-        "'no_such_package_here' is not installed; install it): Ghost",
+        "1 spec(s) valid but not checked against their MJCF nor compiled: Ghost",
+        "    because: Python package 'no_such_package_here' is not installed; install it",
     ]
 
 

@@ -24,8 +24,9 @@ def summary(report: ValidationReport, compiled: bool) -> list[str]:
     if unchecked:
         lines.append(
             f"{len(unchecked)} spec(s) valid but not checked against their MJCF"
-            f"{' nor compiled' if compiled else ''} ({report.missing}): {', '.join(report.unchecked)}"
+            f"{' nor compiled' if compiled else ''}: {', '.join(report.unchecked)}"
         )
+        lines.append(f"    because: {report.missing}")
     if report.placements:
         files = ", ".join(report.placements)
         lines.append(f"{len(report.placements)} scene and experiment file(s) valid: {files}")
