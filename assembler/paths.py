@@ -173,6 +173,9 @@ def _repository_advice(homes: Iterable[Path], refused: Path) -> tuple[str, str]:
 def spec_homes(folder: Path) -> list[Path]:
     """The folders a spec in ``folder`` may read besides the trusted ones: ``folder`` itself and the
     folders its spec repository declares, if one holds it (:class:`SpecError` if that is invalid)."""
+    shipped = (_resolved_folder(shipped_specs_dir()), _resolved_folder(shipped_assets_dir()))
+    if any(folder.resolve().is_relative_to(root) for root in shipped):
+        return [folder]  # a shipped spec reads the shipped folders; a repository around them is not its own
     repository = find_repository(folder)
     return [folder, *(repository.readable if repository is not None else ())]
 
