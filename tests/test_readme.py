@@ -8,6 +8,7 @@ from pathlib import Path
 import assembler
 from assembler.catalog import PARENTS
 from assembler.loader import load_string
+from assembler.repository import find_repository
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()
@@ -47,11 +48,12 @@ def test_readme_urdf_example_validates() -> None:
     assert spec.actuators[0].kp == 50 and spec.actuators[0].forcerange == (-3.5, 3.5)
 
 
-def test_readme_commands_are_the_two_documented_ones() -> None:
+def test_readme_commands_are_the_documented_install_and_test_commands() -> None:
     commands = _blocks("bash")
     assert commands == [
         "pip install . && assembler build Sparrow7 -o sparrow7.xml\n",
         'pip install -e ".[test,robosuite,urdf]" && pytest\n',
+        'pip install ".[robosuite]"\n',
     ]
     assert 'pip install -e ".[test,robosuite,urdf]" && pytest' in (ROOT / ".ci" / "run").read_text()
 
@@ -59,3 +61,13 @@ def test_readme_commands_are_the_two_documented_ones() -> None:
 def test_public_api_names_exist() -> None:
     missing = [name for name in assembler.__all__ if not hasattr(assembler, name)]
     assert missing == []
+
+
+def test_readme_spec_repository_table_is_what_the_loader_reads(tmp_path: Path) -> None:
+    (table,) = _blocks("toml")
+    for folder in ("specs", "assets", "meshes"):
+        (tmp_path / folder).mkdir()
+    (tmp_path / "pyproject.toml").write_text(table)
+    repository = find_repository(tmp_path / "specs")
+    assert repository is not None and repository.root == tmp_path.resolve()
+    assert [p.name for p in repository.readable] == ["specs", "assets", "meshes"]

@@ -18,6 +18,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError
+from assembler.extras import install_command
 from assembler.models import RobotModel
 from assembler.paths import allowing, shipped_specs_dir
 from assembler.urdf import load_urdf
@@ -275,8 +276,8 @@ def test_without_the_converters_a_dae_mesh_says_what_to_install(
     (line,) = str(caught.value).splitlines()
     assert line.endswith(
         "cube.dae: MuJoCo cannot read .dae meshes (only STL, OBJ, MSH) and trimesh and pycollada to convert "
-        'it are not installed; pip install "robot-assembler[urdf]" (trimesh and pycollada), or convert it '
-        "to STL/OBJ yourself"
+        f"it are not installed; {install_command('urdf')}, which brings trimesh and pycollada, or convert "
+        "it to STL/OBJ yourself"
     )
     assert "arm.yaml:2:7: urdf: " in line and f"my_arm.urdf:{DAE_LINE}: " in line
 
@@ -405,12 +406,12 @@ def test_without_the_urdf_extra_the_shipped_urdf_specs_are_unchecked_not_failed(
 ) -> None:
     assert main(["validate", str(shipped_specs_dir() / "urdf")]) == 0
     out, err = capsys.readouterr()
-    assert err == (
-        "note: 6 spec(s) checked without their model file (package 'example-robot-data' not found (searched "
-        "ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and the share/ folders of this Python environment); install it "
-        '(pip install "robot-assembler[urdf]"))\n'
+    unchecked, because = out.splitlines()
+    assert unchecked.startswith("6 spec(s) valid but not checked against their model file: ")
+    assert because == (
+        "    because: package 'example-robot-data' not found (searched ROS_PACKAGE_PATH, AMENT_PREFIX_PATH "
+        f"and the share/ folders of this Python environment); install it: {install_command('urdf')}"
     )
-    assert out.startswith("6 spec(s) valid: ")
     assert main(["list", "bases"]) == 0
     (go2,) = [line for line in capsys.readouterr().out.splitlines() if line.startswith("Go2 ")]
     assert "? (example-robot-data not installed)" in go2

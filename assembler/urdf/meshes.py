@@ -26,11 +26,15 @@ from pathlib import Path
 from typing import Any
 
 from assembler.cache.settings import cache_dir
+from assembler.extras import install_command
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
 """Mesh formats MuJoCo reads itself."""
 
-INSTALL_CONVERTER = 'pip install "robot-assembler[urdf]" (trimesh and pycollada)'
+
+def _install_converter() -> str:
+    return f"{install_command('urdf')}, which brings trimesh and pycollada"
+
 
 _CHUNK = 1 << 20
 
@@ -123,12 +127,12 @@ def readable_mesh(source: Path) -> Path:
         missing = "trimesh and pycollada" if not converter_available() else "pycollada"
         raise MeshConversionError(
             f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and {missing} "
-            f"to convert it are not installed; {INSTALL_CONVERTER}, or convert it to STL/OBJ yourself"
+            f"to convert it are not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     if not converter_available():
         raise MeshConversionError(
             f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
-            f"convert it is not installed; {INSTALL_CONVERTER}, or convert it to STL/OBJ yourself"
+            f"convert it is not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     target = _digest_name(source, ".obj")
     if not target.is_file():

@@ -24,15 +24,15 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
 
+from assembler.extras import install_command
+
 PACKAGE_SCHEME = "package://"
 
 ROS_PACKAGE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.\-]*$")
 """A ROS package name as it may appear in a URI (no path separators, not '.' or '..')."""
 
-INSTALL_HINTS: dict[str, str] = {
-    "example-robot-data": 'pip install "robot-assembler[urdf]"',
-}
-"""What to install for a package a shipped spec reads."""
+INSTALL_EXTRAS: dict[str, str] = {"example-robot-data": "urdf"}
+"""The extra of this project that installs a ROS package a shipped spec reads."""
 
 
 def split_package_uri(uri: str) -> tuple[str, str] | None:
@@ -112,8 +112,12 @@ def not_found_message(uri: str, urdf: Path | None = None) -> str:
     folders = package_folders(name, urdf)
     if folders:
         return f"{uri}: no file '{inner}' in package '{name}' (looked in {', '.join(map(str, folders))})"
-    hint = INSTALL_HINTS.get(name)
-    todo = f"install it ({hint})" if hint else "set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+    extra = INSTALL_EXTRAS.get(name)
+    todo = (
+        f"install it: {install_command(extra)}"
+        if extra
+        else "set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+    )
     where = "the URDF's own folders, " if urdf is not None else ""
     return (
         f"{uri}: package '{name}' not found (searched {where}ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and "
