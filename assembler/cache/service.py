@@ -6,7 +6,9 @@ Models build MuJoCo specs; this module compiles them. A lookup hashes the build 
 build callback assembles the spec, it is compiled once with its ``home`` keyframe, and the entry is
 written in the background with every file the compile read. The keyframe travels with the model
 (:class:`~assembler.mjcf.keyframe.Keyframe`), so an assembly built later (for its XML) carries
-exactly the keyframe of the model that was handed out.
+exactly the keyframe of the model that was handed out. An entry also keeps the assembly's emitted
+XML once it was asked for (:func:`compile_xml`), so a repeated ``get_xml`` neither builds nor
+compiles.
 """
 
 from __future__ import annotations
@@ -16,7 +18,8 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.cache.dependencies import Recorder, asset_files
+from assembler.cache.dependencies import Recorder, asset_files, verify
+from assembler.cache.emission import compile_and_emit
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
@@ -136,3 +139,37 @@ def compile_model(
     if keep:
         models.save(key, compiled.model, recorder, assembly.label)
     return compiled
+
+
+def compile_xml(
+    inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+) -> tuple[CompiledModel | None, str]:
+    """The emitted MJCF of the assembly ``inputs`` describe, and the model when one was compiled.
+
+    From the cache entry when it holds the XML (no build, no compile, the model not even read:
+    None is returned for it); else built once, compiled once and emitted from that same spec
+    (:func:`~assembler.cache.emission.compile_and_emit`), and (with ``store``) kept: the XML is
+    added to a current entry that lacks it, or stored with the model as a new entry.
+    """
+    key = cache_key(inputs) if cache and not cache_disabled() else None
+    if key is None:
+        counts.bypassed += 1
+        assembly = build()
+        model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache)
+        return CompiledModel(model, Keyframe.of(model)), xml
+    models = default_store()
+    xml = models.load_xml(key)
+    if xml is not None:
+        counts.hits += 1
+        return None, xml
+    counts.misses += 1
+    assembly = build()
+    recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
+    model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what)
+    if store:
+        entry = models.entry(key)
+        if entry is not None and not entry.xml and verify(entry.dependencies) is not None:
+            models.add_xml(key, xml)  # the model it holds is this one: keep it, add the text
+        else:
+            models.save(key, model, recorder, assembly.label, xml)
+    return CompiledModel(model, Keyframe.of(model)), xml

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from assembler.cli.common import assembled, use_cache, warn_idle_overrides
-from assembler.mjcf.emit import bundle
+from assembler.mjcf.emit import bundle_xml
 from assembler.paths import display_path
 
 
@@ -16,8 +16,8 @@ def run(args: argparse.Namespace) -> int:
     cache = use_cache(args)
     if args.bundle:
         name = Path(args.output).name if args.output else f"{type(robot).__name__}.xml"
-        robot.get_model(cache=cache)  # compile first: a robot that does not compile writes nothing
-        target = bundle(robot.mjspec, Path(args.bundle), name)
+        xml = robot.get_xml(cache=cache)  # compiled first: a robot that does not compile writes nothing
+        target = bundle_xml(xml, Path(args.bundle), name)
         print(f"wrote {display_path(target)} with its assets", file=sys.stderr)
     elif args.output:
         target = robot.save(args.output, cache=cache)

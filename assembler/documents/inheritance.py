@@ -75,7 +75,13 @@ def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
     if TOP in child.fields:
         fields[TOP] = child.fields[TOP]
     return LocatedDocument(
-        data=data, file=child.file, folder=child.folder, path=child.path, fields=fields, values=values
+        data=data,
+        file=child.file,
+        folder=child.folder,
+        path=child.path,
+        fields=fields,
+        values=values,
+        inherited=(*child.inherited, *parent.sources),
     )
 
 
