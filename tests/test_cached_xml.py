@@ -48,7 +48,8 @@ def entry_of(name: str) -> tuple[Path, str, str]:
 
 
 @pytest.mark.parametrize(
-    "name", ["Sparrow7", pytest.param("Panda", marks=needs_robosuite), pytest.param("GR1", marks=needs_robosuite)]
+    "name",
+    ["Sparrow7", pytest.param("Panda", marks=needs_robosuite), pytest.param("GR1", marks=needs_robosuite)],
 )
 def test_the_stored_xml_is_byte_for_byte_a_fresh_emission(name: str) -> None:
     expected = fresh_xml(name)

@@ -44,7 +44,7 @@ def compile_and_emit(
                 except (MjcfError, ValueError):
                     model, xml = None, None
                 if xml is not None:
-                    return model, xml  # type: ignore[return-value]
+                    return model, xml
     if model is None:
         model = compile_with_home(spec, home, what)
     return model, to_xml(spec)
@@ -62,7 +62,7 @@ def _restored(xml: str, swap: MeshSwap) -> str | None:
     for name, original in swapped:
         element = re.compile(rf'(<mesh name="{re.escape(name)}"[^>]*?) {re.escape(marker)}')
         replacement = rf'\1 content_type="{original}"' if original else r"\1"
-        xml, found = element.subn(lambda match: match.expand(replacement), xml)
+        xml, found = element.subn(lambda match, text=replacement: match.expand(text), xml)
         if found != 1:
             return None
     return xml

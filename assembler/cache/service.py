@@ -25,6 +25,7 @@ from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
 from assembler.cache.mesh_swap import compile_from_store, wait_for_fillers
 from assembler.cache.meshes import MESH_SHARE, default_mesh_store
+from assembler.cache.requests import default_request_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import CacheInfo, ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
@@ -92,6 +93,9 @@ def clear(store: ModelStore) -> CacheInfo:
     meshes = default_mesh_store()
     if meshes is not None and meshes.directory.parent == store.directory:
         meshes.clear()
+    requests = default_request_store()
+    if requests.directory.parent == store.directory:
+        requests.clear()
     return store.clear()
 
 
@@ -100,6 +104,21 @@ def wait_for_writes() -> None:
     (tests, benchmarks); the interpreter waits for entries at exit by itself, not for mesh fillers."""
     wait_for_entries()
     wait_for_fillers()
+
+
+def load_entry(key: str) -> mujoco.MjModel | None:
+    """The model stored under ``key`` if its files are unchanged (a hit, counted), else None; a
+    model loaded before in this process is copied from memory (:mod:`assembler.cache.memory`)."""
+    models = default_store()
+    place = (str(models.directory), key)
+    model = _recent.get(place)
+    if model is None:
+        models.wait_for(key)
+        found = models.load(key)
+        model = _recent.offer(place, *found) if found is not None else None
+    if model is not None:
+        counts.hits += 1
+    return model
 
 
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
@@ -124,13 +143,8 @@ def compile_model(
         return compile_assembly(build(), meshes=cache)
     keep = store
     models = default_store()
-    place = (str(models.directory), key)
-    model = _recent.get(place)
-    if model is None:
-        found = models.load(key)
-        model = _recent.offer(place, *found) if found is not None else None
+    model = load_entry(key)
     if model is not None:
-        counts.hits += 1
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
     assembly = build()
@@ -158,10 +172,11 @@ def compile_xml(
         model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache)
         return CompiledModel(model, Keyframe.of(model)), xml
     models = default_store()
-    xml = models.load_xml(key)
-    if xml is not None:
+    models.wait_for(key)
+    stored = models.load_xml(key)
+    if stored is not None:
         counts.hits += 1
-        return None, xml
+        return None, stored
     counts.misses += 1
     assembly = build()
     recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)

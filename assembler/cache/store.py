@@ -42,6 +42,8 @@ _OWN_FILE = re.compile(r"^\.?[0-9a-f]{40}(-[0-9a-f]{12}\.(mjb|xml)|\.json)(\.\w+
 """Manifests, model and XML files and their temporary files (see :class:`Entry` and ``_write``)."""
 
 _writers: list[threading.Thread] = []
+_pending: dict[tuple[str, str], threading.Thread] = {}
+"""(folder, key) -> the thread writing that entry: a lookup of it in this process waits for it."""
 
 
 def wait_for_writes() -> None:
@@ -96,6 +98,13 @@ class ModelStore:
         self.max_bytes = max_bytes
 
     # ----- lookup -------------------------------------------------------------------------
+
+    def wait_for(self, key: str) -> None:
+        """Wait until this process's write of the entry ``key``, if one is under way, is done:
+        the entry just compiled is then found rather than compiled again."""
+        writer = _pending.get((str(self.directory), key))
+        if writer is not None:
+            writer.join()
 
     def _read_entry(self, key: str) -> Entry | None:
         try:
@@ -251,9 +260,16 @@ class ModelStore:
             target=self._commit, args=(entry, buffer, recorder, text), name="assembler-cache-writer"
         )
         _writers.append(writer)
+        _pending[(str(self.directory), key)] = writer
         writer.start()
 
-    def _commit(
+    def _commit(self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder, xml: bytes | None) -> None:
+        try:
+            self._commit_now(entry, buffer, recorder, xml)
+        finally:
+            _pending.pop((str(self.directory), entry.key), None)
+
+    def _commit_now(
         self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder, xml: bytes | None
     ) -> None:
         dependencies = recorder.result()
@@ -261,6 +277,9 @@ class ModelStore:
             return
         entry = replace(entry, dependencies=tuple(dependencies))
         key = entry.key
+        current = self._read_entry(key)
+        if current is not None and current.xml and not entry.xml and verify(current.dependencies) is not None:
+            return  # the same model from the same files, with its XML already: keep that one
         try:
             self._write(entry.model, buffer)
             if xml is not None:

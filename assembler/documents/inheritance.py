@@ -81,7 +81,7 @@ def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
         path=child.path,
         fields=fields,
         values=values,
-        inherited=(*child.inherited, *parent.sources),
+        origins=tuple(dict.fromkeys((*child.origins, *parent.origins))),
     )
 
 

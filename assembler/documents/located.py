@@ -29,8 +29,9 @@ class LocatedDocument:
     path: Path | None = None
     """The file the document was read from, resolved (None for text given directly)."""
 
-    inherited: tuple[Path, ...] = ()
-    """The files of the parents merged into this document (``extends``), nearest first."""
+    origins: tuple[tuple[str, int, int], ...] = ()
+    """(file, size, mtime_ns when read) of every file this document's data came from: its own, then
+    its parents' (``extends``). Request records (:mod:`assembler.cache.requests`) check them."""
 
     fields: dict[FieldPath, Location] = field(default_factory=dict)
     """Where each field is written: a mapping entry's key, a list item's value, the document's start."""
@@ -61,13 +62,6 @@ class LocatedDocument:
         for part in path:
             value = value[part]
         return value
-
-    @property
-    def sources(self) -> tuple[Path, ...]:
-        """Every file this document's data came from: its own, then its parents' (the request
-        records of :mod:`assembler.cache.requests` check them)."""
-        own = (self.path,) if self.path is not None else ()
-        return tuple(dict.fromkeys((*own, *self.inherited)))
 
     @property
     def start(self) -> Location:

@@ -150,7 +150,7 @@ def apply_overrides(
         path=document.path,
         fields=fields,
         values=values,
-        inherited=document.inherited,
+        origins=document.origins,
     )
 
 

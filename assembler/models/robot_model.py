@@ -15,9 +15,9 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
+from assembler.cache.emission import compile_and_emit
 from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.cache.mesh_swap import compile_from_store
-from assembler.cache.emission import compile_and_emit
 from assembler.cache.service import Assembly, compile_model, compile_xml
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.fieldpath import FieldPath
