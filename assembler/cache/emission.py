@@ -14,7 +14,7 @@ emitted again after the swap is undone, the slow way, so the text is always what
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 import mujoco
 
@@ -61,8 +61,13 @@ def _restored(xml: str, swap: MeshSwap) -> str | None:
         return None  # a mesh of the user's own that reads .msh, or one written twice: do not guess
     for name, original in swapped:
         element = re.compile(rf'(<mesh name="{re.escape(name)}"[^>]*?) {re.escape(marker)}')
-        replacement = rf'\1 content_type="{original}"' if original else r"\1"
-        xml, found = element.subn(lambda match, text=replacement: match.expand(text), xml)
+        attribute = f' content_type="{original}"' if original else ""
+        xml, found = element.subn(_keeping_first_group(attribute), xml)
         if found != 1:
             return None
     return xml
+
+
+def _keeping_first_group(suffix: str) -> Callable[[re.Match[str]], str]:
+    """A replacement that keeps a match's first group and adds ``suffix`` (literal text)."""
+    return lambda match: match.group(1) + suffix
