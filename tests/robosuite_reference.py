@@ -5,6 +5,8 @@ inertia) with a relative tolerance. The parity tests use it; it needs robosuite 
 
 from __future__ import annotations
 
+from typing import Any
+
 import mujoco
 import numpy as np
 
@@ -17,6 +19,13 @@ def robosuite_xml(
 ) -> str:
     """robosuite's MJCF text: default base, default gripper per arm with the robot's gripper mount
     offsets, as ``Robot.load_model`` assembles it (robots/robot.py:161-223)."""
+    return str(robosuite_robot_model(robot, base, grippers, idn).get_xml())
+
+
+def robosuite_robot_model(
+    robot: str, base: str | None = "default", grippers: dict[str, str | None] | None = None, idn: int = 0
+) -> Any:
+    """robosuite's robot model object of :func:`robosuite_xml`'s assembly (its ``get_xml`` not called)."""
     from robosuite.models.bases import robot_base_factory
     from robosuite.models.grippers import gripper_factory
     from robosuite.models.robots import create_robot
@@ -35,7 +44,7 @@ def robosuite_xml(
         if arm in model.gripper_mount_quat_offset:
             root.set("quat", array_to_string(model.gripper_mount_quat_offset[arm]))
         model.add_gripper(gripper, model.eef_name[arm])
-    return str(model.get_xml())
+    return model
 
 
 def robosuite_model(

@@ -156,20 +156,27 @@ def compile_model(
 
 
 def compile_xml(
-    inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+    inputs: BuildInputs,
+    build: Callable[[], Assembly],
+    cache: bool = True,
+    store: bool = True,
+    meshes: bool = True,
 ) -> tuple[CompiledModel | None, str]:
     """The emitted MJCF of the assembly ``inputs`` describe, and the model when one was compiled.
 
     From the cache entry when it holds the XML (no build, no compile, the model not even read:
     None is returned for it); else built once, compiled once and emitted from that same spec
     (:func:`~assembler.cache.emission.compile_and_emit`), and (with ``store``) kept: the XML is
-    added to a current entry that lacks it, or stored with the model as a new entry.
+    added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
+    False reads meshes from their files rather than the mesh store: a process compiling the same
+    meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from
+    files processed (hulls, normals), and not those given in memory.
     """
     key = cache_key(inputs) if cache and not cache_disabled() else None
     if key is None:
         counts.bypassed += 1
         assembly = build()
-        model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache)
+        model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache and meshes)
         return CompiledModel(model, Keyframe.of(model)), xml
     models = default_store()
     models.wait_for(key)
@@ -180,7 +187,7 @@ def compile_xml(
     counts.misses += 1
     assembly = build()
     recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
-    model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what)
+    model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
     if store:
         entry = models.entry(key)
         if entry is not None and not entry.xml and verify(entry.dependencies) is not None:

@@ -318,14 +318,16 @@ class RobotModel(PartModel):
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
 
-    def get_xml(self, cache: bool = True, store: bool = True) -> str:
+    def get_xml(self, cache: bool = True, store: bool = True, meshes: bool = True) -> str:
         """The assembly as one standalone MJCF document (compiled once first, so it is valid); an
-        unchanged robot's XML comes from the compiled-model cache, as its model does."""
+        unchanged robot's XML comes from the compiled-model cache, as its model does. ``meshes``
+        False reads meshes from their files, not the mesh store (see ``compile_xml``)."""
         if self._mjspec is not None:  # the spec the user may have edited, as it is
-            model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=cache)
+            stored = cache and meshes
+            model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=stored)
             self._keyframe = Keyframe.of(model)
             return xml
-        compiled, xml = compile_xml(self.build_inputs(), self._assembly, cache=cache, store=store)
+        compiled, xml = compile_xml(self.build_inputs(), self._assembly, cache, store, meshes)
         if compiled is not None:
             self._keyframe = compiled.keyframe
         return xml
