@@ -121,6 +121,13 @@ def load_entry(key: str) -> mujoco.MjModel | None:
     return model
 
 
+def _recorder(assembly: Assembly) -> Recorder:
+    """The recorder of an assembly's files; mesh files the mesh store hashed are not hashed again."""
+    meshes = default_mesh_store()
+    known = meshes.known_digest if meshes is not None else None
+    return Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files, known)
+
+
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
     decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
@@ -148,7 +155,7 @@ def compile_model(
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
     assembly = build()
-    recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
+    recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
     if keep:
         models.save(key, compiled.model, recorder, assembly.label)
@@ -186,7 +193,7 @@ def compile_xml(
         return None, stored
     counts.misses += 1
     assembly = build()
-    recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
+    recorder = _recorder(assembly)
     model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
     if store:
         entry = models.entry(key)
