@@ -4,6 +4,8 @@ gains its XML on the first ``get_xml``; a spec the user has read is emitted as i
 
 from __future__ import annotations
 
+import os
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -68,6 +70,44 @@ def test_xml_emitted_with_stored_meshes_is_the_same_text() -> None:
     wait_for_fillers()
     expected = fresh_xml("Panda")
     assert assembler.assemble("Panda").get_xml() == expected
+
+
+TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+
+MESH_ARM = """\
+<mujoco model="meshy">
+  <compiler angle="radian" meshdir="meshes"/>
+  <asset><mesh name="tet" file="tet.obj"/><mesh name="tet_big" file="tet.obj" scale="2 2 2"/></asset>
+  <worldbody>
+    <body name="base">
+      <geom name="base_col" type="mesh" mesh="tet_big" mass="2"/>
+      <body name="link1" pos="0 0 0.1">
+        <joint name="joint1" axis="0 0 1" range="-3 3"/>
+        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
+        <body name="right_hand" pos="0.1 0 0"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator><position name="act1" joint="joint1" kp="50" ctrlrange="-3 3"/></actuator>
+</mujoco>
+"""
+
+
+def test_xml_emitted_with_meshes_from_the_mesh_store_is_the_same_text(tmp_path: Path) -> None:
+    """Without robosuite too: an OBJ mesh used twice, read from the mesh store by both compiles."""
+    folder = tmp_path / "arm"
+    (folder / "meshes").mkdir(parents=True)
+    (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON)
+    (folder / "meshy.xml").write_text(MESH_ARM)
+    (folder / "mesh_arm.yaml").write_text("name: MeshArm\nmjcf: meshy.xml\n")
+    for path in [*folder.rglob("*"), folder]:
+        os.utime(path, (time.time() - 3600,) * 2)
+    assembler.register_specs(folder)
+    assembler.assemble("MeshArm").get_model(cache=False)  # first contact: a filler stores the mesh
+    wait_for_fillers()
+    expected = fresh_xml("MeshArm")
+    assert list((default_store().directory / "meshes").rglob("*.msh*")), "the mesh was not stored"
+    assert assembler.assemble("MeshArm").get_xml() == expected
 
 
 def test_a_damaged_xml_file_is_a_miss_and_is_replaced() -> None:
