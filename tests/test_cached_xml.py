@@ -103,7 +103,7 @@ def test_xml_emitted_with_meshes_from_the_mesh_store_is_the_same_text(tmp_path: 
     for path in [*folder.rglob("*"), folder]:
         os.utime(path, (time.time() - 3600,) * 2)
     assembler.register_specs(folder)
-    assembler.assemble("MeshArm").get_model(cache=False)  # first contact: a filler stores the mesh
+    assembler.assemble("MeshArm").get_model(store=False)  # first contact: a filler stores the mesh
     wait_for_fillers()
     expected = fresh_xml("MeshArm")
     assert list((default_store().directory / "meshes").rglob("*.msh*")), "the mesh was not stored"
