@@ -85,7 +85,13 @@ def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
     if TOP in child.fields:
         fields[TOP] = child.fields[TOP]
     return LocatedDocument(
-        data=data, file=child.file, folder=child.folder, path=child.path, fields=fields, values=values
+        data=data,
+        file=child.file,
+        folder=child.folder,
+        path=child.path,
+        fields=fields,
+        values=values,
+        origins=tuple(dict.fromkeys((*child.origins, *parent.origins))),
     )
 
 

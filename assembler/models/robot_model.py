@@ -15,14 +15,14 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
+from assembler.cache.emission import compile_and_emit
 from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.cache.mesh_swap import compile_from_store
-from assembler.cache.service import Assembly, compile_model
+from assembler.cache.service import Assembly, compile_model, compile_xml
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
-from assembler.mjcf.emit import to_xml
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
 from assembler.models.bases import RobotBaseModel
@@ -319,10 +319,19 @@ class RobotModel(PartModel):
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
 
-    def get_xml(self, cache: bool = True, store: bool = True) -> str:
-        """The assembly as one standalone MJCF document (compiled once first, so it is valid)."""
-        self.get_model(cache=cache, store=store)
-        return to_xml(self.mjspec)
+    def get_xml(self, cache: bool = True, store: bool = True, meshes: bool = True) -> str:
+        """The assembly as one standalone MJCF document (compiled once first, so it is valid); an
+        unchanged robot's XML comes from the compiled-model cache, as its model does. ``meshes``
+        False reads meshes from their files, not the mesh store (see ``compile_xml``)."""
+        if self._mjspec is not None:  # the spec the user may have edited, as it is
+            stored = cache and meshes
+            model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=stored)
+            self._keyframe = Keyframe.of(model)
+            return xml
+        compiled, xml = compile_xml(self.build_inputs(), self._assembly, cache, store, meshes)
+        if compiled is not None:
+            self._keyframe = compiled.keyframe
+        return xml
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
         """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""

@@ -54,6 +54,16 @@ def robosuite_xml(case: Case | str) -> str:
     return str(_placed(Case(case) if isinstance(case, str) else case)[0].get_xml())
 
 
+def robosuite_robot_model(robot: str) -> Any:
+    """robosuite's robot model of a robot with its defaults (its ``get_xml`` not called)."""
+    return _placed(Case(robot))[0]
+
+
+def robosuite_model(robot: str) -> mujoco.MjModel:
+    """robosuite's compiled model of a robot with its defaults."""
+    return mujoco.MjModel.from_xml_string(robosuite_xml(robot))
+
+
 def _placed(case: Case) -> tuple[Any, dict[str, Any]]:
     model, grippers = _assemble(case)
     if case.xpos is not None:
