@@ -30,6 +30,7 @@ if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imp
     from assembler.documents import LoadedSpec, Override, parse_overrides
     from assembler.experiment import Experiment, load_experiment
     from assembler.loader import load_paths, load_string
+    from assembler.loading import load_model
     from assembler.models import (
         GripperModel,
         HumanoidModel,
@@ -71,6 +72,7 @@ _LAZY: dict[str, str] = {
     "load_experiment": "assembler.experiment",
     "load_paths": "assembler.loader",
     "load_string": "assembler.loader",
+    "load_model": "assembler.loading",
     "GripperModel": "assembler.models",
     "HumanoidModel": "assembler.models",
     "HumanoidUpperBodyModel": "assembler.models",
@@ -158,6 +160,7 @@ __all__ = [
     "Override",
     "VariantPlan",
     "load_experiment",
+    "load_model",
     "parse_overrides",
     "with_overrides",
     "write_variants",

@@ -35,6 +35,7 @@ from assembler.models import (
     source_of,
 )
 from assembler.paths import shipped_specs_dir
+from assembler.same_spec import same_spec, shipped_note
 from assembler.schema import BaseSpec, PartSpec, RobotSpec
 
 NAME = FieldPath(("name",))
@@ -98,8 +99,9 @@ def _check_names(batch: list[LoadedSpec[PartSpec]]) -> None:
                 loaded.problem(NAME, f"{kind} '{name}' is also defined by {earlier.source}; rename one")
             )
         existing = REGISTRIES[kind].get(name)
-        if existing is not None and source_of(existing) != loaded.source:
-            message = f"{kind} '{name}' is already registered by {source_of(existing)}; rename one"
+        if existing is not None and source_of(existing) != loaded.source and not same_spec(existing, loaded):
+            where = f"{source_of(existing)}{shipped_note(existing)}"
+            message = f"{kind} '{name}' is already registered by {where}, a different spec; rename one"
             problems.append(loaded.problem(NAME, message))
     if problems:
         raise RegistryError(problems)
@@ -117,6 +119,11 @@ def register_loaded(batch: list[LoadedSpec[PartSpec]]) -> list[type[PartModel]]:
     """Register a batch of validated specs: all of them, or (on any problem) none."""
     _check_names(batch)
     with _all_or_nothing():
+        for loaded in batch:  # the same spec as a registered copy (checked above): the file given wins
+            table = REGISTRIES[kind_of(loaded.spec)]
+            existing = table.get(loaded.spec.name)
+            if existing is not None and source_of(existing) != loaded.source:
+                del table[loaded.spec.name]
         return [class_from_spec(loaded) for loaded in batch]
 
 

@@ -66,7 +66,13 @@ class MjcfError(AssemblerError):
 
 
 class MissingPackageError(MjcfError):
-    """A spec points into a Python package (``package://``) that is not installed."""
+    """A spec points into a package (``package://``) that is not installed."""
+
+    def __init__(self, problems: Problem | str | Sequence[Problem], package: str = "") -> None:
+        super().__init__(problems)
+        self.package = package
+        """The package's name (``robosuite``, ``example-robot-data``), for "not installed" notes;
+        empty when the code that raised it did not say."""
 
 
 class RegistryError(AssemblerError):

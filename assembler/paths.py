@@ -5,9 +5,10 @@ carries them inside the package as ``assembler/_shipped/``. Specs may also point
 installed Python package with ``package://<package>/<path>`` (e.g. robosuite's own MJCF).
 
 Specs may come from strangers, so the files they name are confined: after ``..`` and symbolic
-links are resolved, a path must lie under the spec's own folder, the shipped folders, the
-package a ``package://`` reference names, or a folder the user allowed (``--allow-path DIR``,
-:func:`allow_paths`, or the ``ASSEMBLER_ALLOW_PATHS`` variable). Anything else is refused.
+links are resolved, a path must lie under the spec's own folder, the folders its spec repository
+declares (:mod:`assembler.repository`), the shipped folders, the package a ``package://``
+reference names, or a folder the user allowed (``--allow-path DIR``, :func:`allow_paths`, or the
+``ASSEMBLER_ALLOW_PATHS`` variable). Anything else is refused.
 """
 
 from __future__ import annotations
@@ -20,6 +21,8 @@ from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError, SpecError
+from assembler.extras import install_hint
+from assembler.repository import MARKER, find_repository, git_top
 
 PACKAGE_SCHEME = "package://"
 
@@ -138,10 +141,43 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
         return resolved
     written = Path(os.path.normpath(os.path.abspath(path)))
     link = f" (a link to {display_path(resolved)})" if resolved != written else ""
+    reach, hint = _repository_advice(homes, resolved)
     raise error(
         f"{what}{display_path(written)}{link} is outside the folders a spec may read (its own "
-        f"folder, the shipped specs and assets, installed packages); {ALLOW_HINT}"
+        f"folder, {reach}the shipped specs and assets, installed packages); {ALLOW_HINT}{hint}"
     )
+
+
+def _repository_advice(homes: Iterable[Path], refused: Path) -> tuple[str, str]:
+    """What a refusal says about spec repositories: the reach of the one holding the spec, or how to
+    declare one when the spec and the refused file share an undeclared git checkout."""
+    for home in homes:
+        try:
+            repository = find_repository(home)
+        except AssemblerError:  # a broken declaration was reported when the spec was read
+            continue
+        if repository is not None:
+            inside = refused.is_relative_to(repository.root)
+            hint = f", or name its folder in allow of {repository.where}" if inside else ""
+            return "the folders its spec repository declares, ", hint
+    for home in homes:
+        top = git_top(home)
+        if top is not None and refused.is_relative_to(top):
+            return "", (
+                f", or declare the checkout {top} a spec repository (an empty {MARKER} at its root "
+                "lets its specs read its specs/ and assets/ folders; README: Spec repositories)"
+            )
+    return "", ""
+
+
+def spec_homes(folder: Path) -> list[Path]:
+    """The folders a spec in ``folder`` may read besides the trusted ones: ``folder`` itself and the
+    folders its spec repository declares, if one holds it (:class:`SpecError` if that is invalid)."""
+    shipped = (_resolved_folder(shipped_specs_dir()), _resolved_folder(shipped_assets_dir()))
+    if any(folder.resolve().is_relative_to(root) for root in shipped):
+        return [folder]  # a shipped spec reads the shipped folders; a repository around them is not its own
+    repository = find_repository(folder)
+    return [folder, *(repository.readable if repository is not None else ())]
 
 
 def refuse_nul(text: str, what: str = "", error: type[AssemblerError] = SpecError) -> None:
@@ -156,8 +192,9 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
 
     Relative paths are taken relative to the spec's own folder (or the working directory for
     a spec given as a string), so a spec and its MJCF can move together. An existing path must
-    stay below that folder or a trusted one (:func:`confine`); :class:`SpecError` otherwise. A
-    path that does not exist yet is checked when it is read (:func:`locate_model_file`).
+    stay below that folder, the folders of the spec repository holding it (:func:`spec_homes`) or
+    a trusted one (:func:`confine`); :class:`SpecError` otherwise. A path that does not exist yet
+    is checked when it is read (:func:`locate_model_file`).
     """
     refuse_nul(reference)
     if reference.startswith(PACKAGE_SCHEME):
@@ -168,7 +205,7 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
         path = home / path
     if not os.path.lexists(path):  # nothing to read yet: "not found" is the error, when it is read
         return str(path.resolve())
-    return str(confine(path, [home], ""))
+    return str(confine(path, spec_homes(home), ""))
 
 
 def _is_file(path: Path) -> bool:
@@ -190,9 +227,10 @@ def locate_model_file(reference: str) -> Path:
             raise MjcfError(f"{reference}: expected package://<top-level package>/<path in it>")
         root = package_root(package)
         if root is None:
-            extra = ' (pip install "robot-assembler[robosuite]")' if package == "robosuite" else ""
             raise MissingPackageError(
-                f"{reference}: Python package '{package}' is not installed; install it{extra}"
+                f"{reference}: Python package '{package}' is not installed; "
+                f"install it{install_hint(package)}",
+                package,
             )
         path = root / inner
         if _is_file(path):

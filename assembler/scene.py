@@ -25,7 +25,7 @@ from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.models import RobotModel
-from assembler.paths import confine
+from assembler.paths import confine, spec_homes
 from assembler.references import placement_reference_problems
 from assembler.schema import SceneRobot, SceneSpec
 
@@ -63,7 +63,7 @@ def robot_reference(reference: str, folder: Path | None = None) -> str:
     if reference.endswith(SPEC_SUFFIXES):
         home = folder or Path.cwd()
         # A scene or experiment from a stranger names robot files as a spec names its parents.
-        (cls,) = register_specs(confine(home / reference, [home], "robot spec "))
+        (cls,) = register_specs(confine(home / reference, spec_homes(home), "robot spec "))
         return cls.__name__
     return reference
 

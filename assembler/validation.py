@@ -2,8 +2,8 @@
 specs give (registered parts, MJCF bodies, joints, sites, geoms, sensors), and optionally a compile.
 
 Every problem of every spec is reported at once, each at its file, line and column. A spec whose
-MJCF lives in a package that is not installed (robosuite's, without the extra) is reported as not
-checked against its MJCF, never as checked.
+model file lives in a package that is not installed (robosuite's without the robosuite extra,
+example-robot-data's without the urdf extra) is reported as not checked against it, never as checked.
 """
 
 from __future__ import annotations
@@ -29,6 +29,17 @@ PLACEMENT_MODELS: dict[str, type[SceneSpec] | type[ExperimentSpec]] = {
 
 
 @dataclass
+class MissingPackage:
+    """A package some specs read their model file from, not installed here."""
+
+    message: str
+    """What is missing and what to install, e.g. ``Python package 'robosuite' is not installed; ...``."""
+
+    specs: list[str] = field(default_factory=list)
+    """The specs left unchecked for want of it."""
+
+
+@dataclass
 class ValidationReport:
     """What ``validate`` checked."""
 
@@ -41,11 +52,13 @@ class ValidationReport:
     placements: list[str] = field(default_factory=list)
     """Scene and experiment files checked (their schema and the names they use)."""
 
-    unchecked: list[str] = field(default_factory=list)
-    """Specs not checked against their MJCF: the package holding it is not installed."""
+    missing: dict[str, MissingPackage] = field(default_factory=dict)
+    """Packages not installed, by name, with the specs that could not be checked against their file."""
 
-    missing: str = ""
-    """What to install to check the unchecked ones."""
+    @property
+    def unchecked(self) -> list[str]:
+        """Specs not checked against their model file: the package holding it is not installed."""
+        return [name for package in self.missing.values() for name in package.specs]
 
 
 def _compile(cls: type[PartModel]) -> None:
@@ -85,8 +98,8 @@ def validate_specs(paths: Sequence[str | Path], compile: bool = False) -> Valida
                 _compile(cls)
                 report.compiled.append(cls.__name__)
         except MissingPackageError as error:
-            report.unchecked.append(cls.__name__)
-            report.missing = error.problems[0].message.split(": ", 1)[-1]
+            message = error.problems[0].message.split(": ", 1)[-1]  # without the file reference
+            report.missing.setdefault(error.package, MissingPackage(message)).specs.append(cls.__name__)
         except AssemblerError as error:
             problems.extend(error.problems)
     if problems:

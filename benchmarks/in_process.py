@@ -1,7 +1,7 @@
-"""Measurements made in the harness's own process, interleaved with warm-up: assembling MJCF text
-(ours against robosuite's model layer, or against MuJoCo's parse of our XML for our own robots),
-and loading a robot again in the same process (ours, from the cache, against MuJoCo's warm
-recompile and against copying a model)."""
+"""Measurements made in the harness's own process, interleaved after a warm-up: ``get_xml`` of a
+robot the cache holds against robosuite's ``get_xml`` (target 4), and loading a robot again and
+again in one process (target 6: from the in-memory copy, against MuJoCo's warm recompile and a
+model copy)."""
 
 from __future__ import annotations
 
@@ -12,48 +12,33 @@ import mujoco
 
 import assembler
 from assembler import cache
-from assembler.mjcf.emit import to_xml
 from benchmarks.figures import Figure, ratio_figure
-from tests.robosuite_reference import robosuite_xml
+from benchmarks.timing import interleaved
 
-ASSEMBLE_TARGET = 0.5
+XML_TARGET = 2.0
 REPEATED_TARGET = 1.2
 
 
-def _our_xml(name: str) -> str:
-    return to_xml(assembler.assemble(name).mjspec)
-
-
-def assemble(name: str, against_robosuite: bool, repeats: int) -> list[Figure]:
-    """Spec to MJCF text, no compile: ours against robosuite's, or against MuJoCo parsing ours.
-
-    Also ours up to the assembled ``MjSpec`` only: MuJoCo's XML writer (``MjSpec.to_xml``)
-    compiles the spec inside, so for robots with meshes the text costs a (warm) compile.
-    """
+def get_xml(name: str, robosuite: bool, repeats: int) -> list[Figure]:
+    """``assemble(name).get_xml()`` with the XML in the cache, against robosuite creating the robot
+    and calling its ``get_xml`` (our own robots: against MuJoCo parsing our XML; no target)."""
+    xml = assembler.assemble(name).get_xml()
+    cache.wait_for_writes()
     reference: Callable[[], object]
-    if against_robosuite:
-        reference, reference_name = (lambda: robosuite_xml(name)), "robosuite"
+    if robosuite:
+        from tests.parity.robosuite_side import robosuite_xml
+
+        reference, reference_name = (lambda: robosuite_xml(name)), "robosuite create + get_xml"
     else:
-        xml = _our_xml(name)
-        reference, reference_name = (lambda: mujoco.MjSpec.from_string(xml)), "MuJoCo parse"
-    cases = {
-        "text": lambda: _our_xml(name),
-        "spec": lambda: assembler.assemble(name).mjspec,
-        "reference": reference,
-    }
-    times = interleaved_cases(cases, repeats)
-    at_most = ASSEMBLE_TARGET if against_robosuite else None
+        reference, reference_name = (lambda: mujoco.MjSpec.from_string(xml)), "MuJoCo parse of our XML"
+    hits = cache.counts.hits
+    times = interleaved({"ours": lambda: assembler.assemble(name).get_xml(), "reference": reference}, repeats)
+    note = "from the cache" if cache.counts.hits > hits else "NOT from the cache"
+    target = XML_TARGET if robosuite else None
     return [
-        ratio_figure("assemble", name, times["text"], reference_name, times["reference"], at_most),
         ratio_figure(
-            "assemble",
-            f"{name} (MjSpec)",
-            times["spec"],
-            reference_name,
-            times["reference"],
-            at_most,
-            "to our MjSpec, without MuJoCo's XML writer",
-        ),
+            "4 get_xml", f"{name} warm", times["ours"], reference_name, times["reference"], target, note
+        )
     ]
 
 
@@ -65,7 +50,7 @@ def repeated(name: str, repeats: int) -> list[Figure]:
     cache.wait_for_writes()
     xml = robot.get_xml()
     hits = cache.counts.hits
-    times = interleaved_cases(
+    times = interleaved(
         {
             "ours": lambda: assembler.assemble(name).get_model(),
             "recompile": lambda: mujoco.MjModel.from_xml_string(xml),
@@ -76,7 +61,7 @@ def repeated(name: str, repeats: int) -> list[Figure]:
     note = "" if cache.counts.hits > hits else "no cache hit: assembler code changed meanwhile?"
     return [
         ratio_figure(
-            "repeated load",
+            "6 repeated load",
             name,
             times["ours"],
             "MuJoCo recompile",
@@ -84,14 +69,5 @@ def repeated(name: str, repeats: int) -> list[Figure]:
             REPEATED_TARGET,
             note,
         ),
-        ratio_figure(
-            "repeated load", name, times["ours"], "model copy", times["copy"], REPEATED_TARGET, note
-        ),
+        ratio_figure("6 repeated load", name, times["ours"], "model copy", times["copy"], None, note),
     ]
-
-
-def interleaved_cases(cases: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
-    """:func:`benchmarks.timing.interleaved` with one warm-up round."""
-    from benchmarks.timing import interleaved
-
-    return interleaved(cases, repeats, warmup=1)

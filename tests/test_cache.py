@@ -440,9 +440,9 @@ def test_benchmark_quick_run_writes_every_measure(tmp_path: Path) -> None:
     assert result.returncode == 0, result.stderr[-2000:]
     figures = json.loads((output / "results.json").read_text())["figures"]
     measures = {figure["measure"] for figure in figures}
-    assert measures == {"assemble", "cold load", "warm load", "repeated load", "scale", "start-up"}
+    assert measures == {"2 warm", "3 start-up", "4 get_xml", "6 repeated load", "6 scale"}
     report = (output / "results.md").read_text()
-    assert "| warm load | Sparrow7 |" in report and f"MuJoCo {mujoco.__version__}" in report
+    assert "| 2 warm | Sparrow7 load_model |" in report and f"MuJoCo {mujoco.__version__}" in report
 
 
 # ----- files that change between making a robot and compiling it -----------------------------

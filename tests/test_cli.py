@@ -11,7 +11,9 @@ import mujoco
 import pytest
 
 from assembler.cli import build_parser, main
+from assembler.errors import summarize_names
 from assembler.paths import shipped_specs_dir
+from assembler.registry import REGISTRIES
 
 
 def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
@@ -43,10 +45,11 @@ def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureF
     lines = err.splitlines()
     assert len(lines) == 2
     assert (
-        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: arm_type, base_xpos_offset," in lines[0]
+        "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: actuators, add_free_joint, arm_type, balance_inertia, base_xpos_offset,"
+        in lines[0]
     )
-    assert lines[0].endswith(", remove_free_joint, top_offset")
-    assert lines[1].endswith("b.yaml:1:1: missing required field 'mjcf'; add it")
+    assert lines[0].endswith(", remove_free_joint, top_offset, urdf")
+    assert lines[1].endswith("b.yaml:1:1: give exactly one of mjcf and urdf (the model file), got neither")
     assert "Traceback" not in err
 
 
@@ -131,7 +134,8 @@ def test_schema_is_json_schema_with_every_field_documented(capsys: pytest.Captur
         "#/$defs/ExperimentSpec",
     ]
     robot = schema["$defs"]["RobotSpec"]
-    assert robot["additionalProperties"] is False and robot["else"]["required"] == ["name", "mjcf"]
+    assert robot["additionalProperties"] is False and robot["else"]["required"] == ["name"]
+    assert robot["else"]["oneOf"] == [{"required": ["mjcf"]}, {"required": ["urdf"]}]
     assert robot["if"] == {"required": ["extends"]} and robot["then"]["required"] == ["name"]  # inherits mjcf
     undocumented = [
         f"{name}.{field}"
@@ -230,3 +234,77 @@ def test_validate_help_offers_only_the_formats_it_accepts(capsys: pytest.Capture
         main(["validate", "--help"])
     text = " ".join(capsys.readouterr().out.split())
     assert "--format {text,github}" in text and "json" not in text
+
+
+def test_validate_with_no_path_validates_the_specs_folders(
+    capsys: pytest.CaptureFixture[str], two_link: Path
+) -> None:
+    code, out, err = run(capsys, "--specs", str(two_link.parent), "validate", "--compile")
+    assert (code, out, err) == (0, "1 spec(s) validated and compiled: TwoLink\n", "")
+
+
+def test_validate_counts_the_specs_it_could_not_check_against_their_mjcf(
+    capsys: pytest.CaptureFixture[str], two_link: Path
+) -> None:
+    (two_link.parent / "ghost.yaml").write_text(
+        "name: Ghost\nmjcf: package://no_such_package_here/robot.xml\n"
+    )
+    code, out, err = run(capsys, "validate", str(two_link.parent), "--compile")
+    assert (code, err) == (0, "")
+    assert out.splitlines() == [
+        "1 spec(s) validated and compiled: TwoLink",
+        "1 spec(s) valid but not checked against their model file nor compiled: Ghost",
+        "    because: Python package 'no_such_package_here' is not installed; install it",
+    ]
+
+
+def test_validate_counts_scene_and_experiment_files(
+    capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(shipped_specs_dir().parent)
+    code, out, _ = run(capsys, "validate", "scenes", "experiments")
+    assert (code, out) == (
+        0,
+        "2 scene and experiment file(s) valid: scenes/two_arms.yaml, experiments/soft_pair.yaml\n",
+    )
+
+
+@pytest.mark.parametrize(
+    ("file", "spec", "kind"),
+    [
+        pytest.param("arm.yaml", "name: Arm\nextends: Zzzzzz\n", "robot", id="robot"),
+        pytest.param("hand.yaml", "name: Hand\nkind: gripper\nextends: Zzzzzz\n", "gripper", id="gripper"),
+        pytest.param(
+            "cart.yaml", "name: Cart\nkind: base\ntype: mobile\nextends: Zzzzzz\n", "base", id="base"
+        ),
+    ],
+)
+def test_extends_an_unknown_name_with_no_close_match_lists_names_of_its_kind_only(
+    capsys: pytest.CaptureFixture[str],
+    write,
+    file: str,
+    spec: str,
+    kind: str,  # type: ignore[no-untyped-def]
+) -> None:
+    path = write(f"mine/{file}", spec)
+    code, _, err = run(capsys, "validate", str(path))
+    line = spec.count("\n")
+    known = summarize_names(sorted(REGISTRIES[kind]), limit=20)
+    assert (code, err) == (
+        1,
+        f"{path}:{line}:10: extends: unknown {kind} spec 'Zzzzzz'. Known {kind}s: {known}\n",
+    )
+
+
+def test_list_sorts_by_name_and_shows_shipped_specs_short_from_anywhere(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)  # outside the checkout, as after a wheel install
+    for what in ("robots", "bases", "grippers"):
+        code, out, _ = run(capsys, "list", what)
+        rows = [line.split() for line in out.splitlines()[1:]]
+        names = [row[0] for row in rows]
+        assert code == 0 and names == sorted(names, key=str.casefold)
+        assert all(row[-1].startswith("specs/") and row[-1].endswith(".yaml") for row in rows)
+        if what == "robots":
+            assert ["Sparrow7", "manipulator", "7", "specs/sparrow7.yaml"] in rows

@@ -77,17 +77,27 @@ def _references(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> dict[str, by
 
 
 def _check_cache(cache: Path) -> int:
-    """Every entry loads; only whole entries and their model files are there. Returns the count."""
+    """Every entry loads (its XML too, when it has one); only whole entries and their model and
+    XML files are there. Returns the count."""
     store = ModelStore(cache, 2 * 1024**3)
     names = sorted(os.listdir(cache))
     manifests = [n for n in names if n.endswith(MANIFEST_SUFFIX) and not n.startswith(".")]
+    xml_files = set()
     for manifest in manifests:
-        assert store.load(manifest.removesuffix(MANIFEST_SUFFIX)) is not None, manifest
+        key = manifest.removesuffix(MANIFEST_SUFFIX)
+        assert store.load(key) is not None, manifest
+        entry = store.entry(key)
+        if entry is not None and entry.xml:
+            assert store.load_xml(key) is not None, manifest
+            xml_files.add(entry.xml)
     strays = [
         n
         for n in names
-        if not n.startswith(".") and not n.endswith((MANIFEST_SUFFIX, MODEL_SUFFIX)) and n != "meshes"
-    ]  # the mesh store's folder; its own tests check its files
+        if not n.startswith(".")
+        and not n.endswith((MANIFEST_SUFFIX, MODEL_SUFFIX))
+        and n not in xml_files
+        and n not in ("meshes", "requests")
+    ]  # the mesh store's and the request records' folders; their own tests check their files
     assert strays == []
     return len(manifests)
 

@@ -231,7 +231,9 @@ def test_cache_clear_says_what_it_could_not_remove(
     capsys.readouterr()
     assert main(["cache", "clear"]) == 1
     (line,) = capsys.readouterr().err.splitlines()
-    assert line.startswith(f"could not remove 2 file(s) from {tmp_path / 'cache'}; first: ")
+    assert line.startswith(
+        f"could not remove 3 file(s) from {tmp_path / 'cache'}; first: "
+    )  # manifest, model, XML
     assert line.endswith(": Permission denied")
 
 

@@ -24,7 +24,7 @@ PROBE_MJCF = """\
   <compiler angle="radian" autolimits="true"/>
   <worldbody>
     <body name="base">
-      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/>
+      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/><geom name="base_vis" type="cylinder" size="0.05 0.05" group="1" contype="0" conaffinity="0" mass="0"/>
       <body name="link1" pos="0 0 0.1">
         <joint name="shoulder" axis="0 0 1" range="-2 2"/>
         <geom name="link1_col" type="capsule" fromto="0 0 0 0.3 0 0" size="0.03" mass="1"/>
@@ -42,7 +42,8 @@ PROBE_MJCF = """\
   </actuator>
 </mujoco>
 """
-"""A clean two-link arm (no findings); each test breaks one thing in it."""
+"""A clean two-link arm (no findings: it has a visual geom, so robosuite's cameras see it); each
+test breaks one thing in it."""
 
 PROBE_SPEC = "name: Probe\nmjcf: probe.xml\ninit_qpos: [0.3, -0.5]\n"
 
@@ -89,6 +90,22 @@ def test_a_clean_robot_has_no_findings(capsys: pytest.CaptureFixture[str], write
     code = main(["lint", str(probe(write))])
     assert code == 0
     assert capsys.readouterr().out == "Probe: no findings\n"
+
+
+def test_a_robot_with_only_collision_geoms_is_reported_invisible_to_robosuites_cameras(
+    capsys: pytest.CaptureFixture[str], write: Write
+) -> None:
+    bare = re.sub(r'<geom name="base_vis"[^>]*/>', "", PROBE_MJCF)
+    spec = probe(write, mjcf=bare)
+    assert main(["lint", str(spec)]) == 0  # a warning
+    assert capsys.readouterr().out.splitlines() == [
+        f"{spec}:2:7: warning RA504 robot0_base: Probe has 3 geom(s), all in group(s) 0 and none in the "
+        "visual groups 1, 2: robosuite's cameras and viewer hide group 0, so it is invisible there "
+        "(assembler render draws its collision geoms instead)",
+        '    fix: add visual geoms in group 1 with contype="0" conaffinity="0" (copies of the collision '
+        'geoms will do), or put geoms meant to be seen in group="1"',
+        "Probe: 1 warning",
+    ]
 
 
 def test_overlapping_parts_at_home_are_an_error_with_the_mjcf_line(

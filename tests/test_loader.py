@@ -27,7 +27,9 @@ INVALID_SPECS = [
         id="yaml-syntax",
     ),
     pytest.param("mjcf: a.xml\n", "1:1: missing required field 'name'; add it", id="missing-name"),
-    pytest.param("name: A\n", "1:1: missing required field 'mjcf'; add it", id="missing-mjcf"),
+    pytest.param(
+        "name: A\n", "1:1: give exactly one of mjcf and urdf (the model file), got neither", id="missing-mjcf"
+    ),
     pytest.param(
         "name: A\nmjcf: a.xml\njoint_defaults:\n  dampng: 0.1\n",
         "4:3: joint_defaults.dampng: unknown key 'dampng'. Did you mean 'damping'? Valid keys here: armature, damping, frictionloss",

@@ -8,6 +8,7 @@ from pathlib import Path
 import assembler
 from assembler.catalog import PARENTS
 from assembler.loader import load_string
+from assembler.repository import find_repository
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()
@@ -23,14 +24,14 @@ def test_readme_python_examples_run() -> None:
 
 
 def test_readme_spec_example_validates() -> None:
-    (spec_text,) = _blocks("yaml")
+    spec_text, _ = _blocks("yaml")
     loaded = load_string(spec_text, PARENTS)
     assert loaded.spec.name == "Sparrow7Soft"
     assert loaded.spec.resolve_base_xpos_offset("table", table_length=0.8)[0] == -0.56
 
 
 def test_readme_spec_example_builds_a_robot() -> None:
-    (spec_text,) = _blocks("yaml")
+    spec_text, _ = _blocks("yaml")
     # the example's mjcf path is relative to specs/, where a user would save it
     text = spec_text.replace(
         "../assets/sparrow7/sparrow7.xml", str(ROOT / "assets" / "sparrow7" / "sparrow7.xml")
@@ -40,15 +41,33 @@ def test_readme_spec_example_builds_a_robot() -> None:
     assert str(robot.joint_values["joint6"]["damping"].source) == "mjcf (class 'wrist')"
 
 
-def test_readme_commands_are_the_two_documented_ones() -> None:
+def test_readme_urdf_example_validates() -> None:
+    _, urdf_text = _blocks("yaml")
+    spec = load_string(urdf_text, PARENTS).spec
+    assert spec.urdf == "package://example-robot-data/robots/so_arm_description/urdf/so101.urdf"
+    assert spec.actuators[0].kp == 50 and spec.actuators[0].forcerange == (-3.5, 3.5)
+
+
+def test_readme_commands_are_the_documented_install_and_test_commands() -> None:
     commands = _blocks("bash")
     assert commands == [
         "pip install . && assembler build Sparrow7 -o sparrow7.xml\n",
-        'pip install -e ".[test,robosuite]" && pytest\n',
+        'pip install -e ".[test,robosuite,urdf]" && pytest\n',
+        'pip install ".[robosuite]"\n',
     ]
-    assert 'pip install -e ".[test,robosuite]" && pytest' in (ROOT / ".ci" / "run").read_text()
+    assert 'pip install -e ".[test,robosuite,urdf]" && pytest' in (ROOT / ".ci" / "run").read_text()
 
 
 def test_public_api_names_exist() -> None:
     missing = [name for name in assembler.__all__ if not hasattr(assembler, name)]
     assert missing == []
+
+
+def test_readme_spec_repository_table_is_what_the_loader_reads(tmp_path: Path) -> None:
+    (table,) = _blocks("toml")
+    for folder in ("specs", "assets", "meshes"):
+        (tmp_path / folder).mkdir()
+    (tmp_path / "pyproject.toml").write_text(table)
+    repository = find_repository(tmp_path / "specs")
+    assert repository is not None and repository.root == tmp_path.resolve()
+    assert [p.name for p in repository.readable] == ["specs", "assets", "meshes"]

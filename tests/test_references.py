@@ -1,6 +1,6 @@
 """Every name a spec gives is checked by ``assembler validate`` (no compile), at its position, with
 the closest name that exists: registered bases and grippers, bodies, joints, sites, geoms and
-sensors of the MJCF, parents, and the robots, bases and grippers of scenes and experiments.
+sensors of the MJCF (joint overrides, declared actuators, contact exclusions), parents, and the robots, bases and grippers of scenes and experiments.
 
 Each row is one file with one typo and the exact line ``validate`` prints for it.
 """
@@ -30,6 +30,8 @@ CASES = [
     pytest.param(ARM + "joint_groups: {torso: [elbw]}\n", f"3:24: joint_groups.torso[0]: no joint matches 'elbw'. Did you mean 'elbow'? {JOINTS}", id="robot-joint-group"),
     pytest.param(ARM + "remove_actuation: [shouldr]\n", f"3:20: remove_actuation[0]: no joint matches 'shouldr'. Did you mean 'shoulder'? {JOINTS}", id="robot-remove-actuation"),
     pytest.param(ARM + "joints:\n  - {match: 'elb?x', damping: 1}\n", f"4:13: joints[0].match: no joint matches 'elb?x'. Did you mean 'elbow'? {JOINTS}", id="robot-joint-override"),
+    pytest.param(ARM + "actuators:\n  - {match: 'elbw', kp: 10}\n", f"4:13: actuators[0].match: no joint matches 'elbw'. Did you mean 'elbow'? {JOINTS}", id="robot-actuator"),
+    pytest.param(ARM + "contact_excludes: [[base, lnk2]]\n", "3:27: contact_excludes[0][1]: no body named 'lnk2' in the MJCF. Did you mean 'link2'? Bodies: base, link1, link2, right_hand", id="robot-contact-exclude"),
     pytest.param(ARM + "extends: Sparow7\n", "3:10: extends: unknown robot spec 'Sparow7'. Did you mean 'Sparrow7'?", id="robot-extends"),
     pytest.param(CART + "support_body: supprt\n", "5:15: support_body: no body named 'supprt' in the MJCF. Did you mean 'support'? Bodies: base, lift, support", id="base-support-body"),
     pytest.param(CART + "joint_groups: {base: [joint_mobile_fwd]}\n", "5:23: joint_groups.base[0]: no joint matches 'joint_mobile_fwd'. Did you mean 'joint_mobile_forward'? Joints: joint_mobile_forward, joint_mobile_yaw, joint_torso_height", id="base-joint-group"),

@@ -67,7 +67,7 @@ def test_duplicate_name_names_both_sources(two_link: Path, write, monkeypatch: p
         assembler.register_specs(other)
     message = str(caught.value)
     assert "elsewhere/twolink.yaml:1:7: name: robot 'TwoLink' is already registered by" in message
-    assert "robots/twolink.yaml:1:1; rename one" in message
+    assert "robots/twolink.yaml:1:1, a different spec; rename one" in message
 
 
 def test_duplicate_python_class_names_both_sources(two_link: Path) -> None:

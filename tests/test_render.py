@@ -9,12 +9,15 @@ import sys
 import zlib
 from pathlib import Path
 
+import mujoco
 import numpy as np
 import pytest
 
 import assembler
-from assembler.cli import main
-from assembler.render import encode_png
+from assembler.cli import arguments, main
+from assembler.geom_groups import GROUP_COUNT, geoms_by_part
+from assembler.models import RobotModel
+from assembler.render import LABELS, VIEWS, encode_png
 from assembler.render.picture import render_views
 from assembler.render.stage import FLOOR, HIDDEN_GROUP, Stage, build_stage
 
@@ -89,7 +92,7 @@ def test_render_writes_a_png_with_the_robot_centred_and_filling_the_frame(
     target = tmp_path / "sparrow.png"
     code = main(["render", "Sparrow7", "-o", str(target), "--views", "iso", "--size", f"{WIDTH}x{HEIGHT}"])
     assert code == 0
-    assert capsys.readouterr().err == f"wrote {target} ({WIDTH}x{HEIGHT}, iso)\n"
+    assert capsys.readouterr().err == f"wrote {target} ({WIDTH}x{HEIGHT}, iso; geom groups 1, 2)\n"
     image = decode_png(target.read_bytes())
     assert image.shape == (HEIGHT, WIDTH, 3)
     assert image.std() > 20  # not blank
@@ -179,3 +182,124 @@ def test_panda_renders_with_its_mount_and_gripper(tmp_path: Path, sparrow_stage:
     assert abs(np.nonzero(mask)[1].mean() / WIDTH - 0.5) < 0.15
     floor_height = stage.data.geom_xpos[stage.model.geom(FLOOR).id][2]
     assert stage.points[:, 2].min() - 0.01 < floor_height < stage.points[:, 2].min()  # just under the mount
+
+
+BLOCKY_MJCF = """\
+<mujoco model="blocky">
+  <worldbody>
+    <body name="base" pos="0 0 0.1">
+      <geom name="base_col" type="box" size="0.1 0.1 0.1" rgba="0.2 0.6 0.2 1"/>
+      <body name="link1" pos="0 0 0.2">
+        <joint name="j1" axis="0 0 1" range="-3 3"/>
+        <geom name="link1_col" type="capsule" fromto="0 0 0 0.3 0 0.3" size="0.04" mass="1"/>
+        <body name="right_hand" pos="0.3 0 0.3"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+"""A robot whose geoms are all in group 0 (collision only), as hand-written and URDF-derived MJCF often is."""
+
+
+@pytest.fixture
+def blocky(write) -> Path:  # type: ignore[no-untyped-def]
+    write("blocky/blocky.xml", BLOCKY_MJCF)
+    return write("blocky/blocky.yaml", "name: Blocky\nmjcf: blocky.xml\n")  # type: ignore[no-any-return]
+
+
+def part_mask(stage: Stage, robot: RobotModel, image: np.ndarray, view: str, name: str) -> np.ndarray:
+    """Pixels where the part ``name`` is: those that change when its geoms alone are hidden."""
+    (part,) = [p for p in geoms_by_part(stage.model, (robot, *robot.models)) if p.name == name]
+    groups = stage.model.geom_group.copy()
+    stage.model.geom_group[list(part.geoms)] = HIDDEN_GROUP
+    try:
+        (without,) = render_views(stage, [view], image.shape[1], image.shape[0])
+    finally:
+        stage.model.geom_group[:] = groups
+    return np.abs(image.astype(int) - without.astype(int)).max(axis=2) > 24
+
+
+def test_a_robot_with_only_collision_geoms_is_drawn_and_the_line_says_how(
+    blocky: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "blocky.png"
+    assert main(["render", str(blocky), "-o", str(target), "--size", f"{WIDTH}x{HEIGHT}"]) == 0
+    assert capsys.readouterr().err == (
+        f"wrote {target} ({WIDTH}x{HEIGHT}, iso; geom group 0 (collision) for Blocky: it has no visual geoms)\n"
+    )
+    image = decode_png(target.read_bytes())
+    stage = build_stage(assembler.assemble("Blocky"), WIDTH, HEIGHT)
+    mask = robot_mask(stage, image, "iso")
+    assert 0.05 < mask.mean() < 0.7  # the robot fills the frame: framed on what is drawn
+    ys, xs = np.nonzero(mask)
+    assert abs(xs.mean() / WIDTH - 0.5) < 0.15 and abs(ys.mean() / HEIGHT - 0.5) < 0.15
+
+
+def test_a_collision_only_robot_shows_its_collision_geoms_beside_a_gripper_with_visual_ones(
+    blocky: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "pair.png"
+    argv = ["render", str(blocky), "--gripper", "right=PincerGripper", "-o", str(target), "--size", "320x240"]
+    assert main(argv) == 0
+    assert capsys.readouterr().err == (
+        f"wrote {target} (320x240, iso; geom groups 1, 2; group 0 (collision) for Blocky: it has no visual geoms)\n"
+    )
+    image = decode_png(target.read_bytes())
+    robot = assembler.assemble("Blocky", grippers={"right": "PincerGripper"})
+    stage = build_stage(robot, 320, 240)
+    assert part_mask(stage, robot, image, "iso", "Blocky").mean() > 0.02
+    assert part_mask(stage, robot, image, "iso", "PincerGripper").mean() > 0.002
+    # the gripper shows only its visual geoms: every drawn gripper geom was in group 1 or 2
+    model, name = robot.get_model(), mujoco.mjtObj.mjOBJ_GEOM
+    drawn = [
+        mujoco.mj_id2name(stage.model, name, g)
+        for g in range(stage.model.ngeom)
+        if stage.model.geom_group[g] != HIDDEN_GROUP
+    ]
+    gripper = [geom for geom in drawn if geom and geom.startswith("gripper0_right_")]
+    assert gripper and all(model.geom(geom).group in (1, 2) for geom in gripper)
+
+
+def test_groups_choose_what_is_drawn(
+    sparrow_stage: Stage, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    default, collision = tmp_path / "default.png", tmp_path / "collision.png"
+    size = ["--size", f"{WIDTH}x{HEIGHT}", "--views", "side"]
+    assert main(["render", "Sparrow7", "-o", str(default), *size]) == 0
+    assert main(["render", "Sparrow7", "-o", str(collision), "--groups", "0", *size]) == 0
+    assert (
+        capsys.readouterr().err.splitlines()[-1]
+        == f"wrote {collision} ({WIDTH}x{HEIGHT}, side; geom group 0)"
+    )
+    first, second = decode_png(default.read_bytes()), decode_png(collision.read_bytes())
+    changed = np.abs(first.astype(int) - second.astype(int)).max(axis=2) > 24
+    assert changed.mean() > 0.01  # Sparrow7's collision capsules are not its visual meshes
+
+
+def test_groups_that_draw_nothing_are_an_error_not_an_empty_picture(
+    blocky: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "empty.png"
+    assert main(["render", str(blocky), "--groups", "3,4", "-o", str(target)]) == 1
+    assert capsys.readouterr().err == (
+        "nothing to draw: Blocky has no geom in geom groups 3, 4 (its geoms are in geom group 0); "
+        "choose the groups to draw with --groups, e.g. --groups 0,1,2\n"
+    )
+    assert not target.exists()
+
+
+@pytest.mark.parametrize("value", ["", "6", "1,x", "-1"])
+def test_groups_outside_mujocos_six_are_a_usage_error(value: str, capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as caught:
+        main(["render", "Sparrow7", "-o", "x.png", f"--groups={value}"])
+    assert caught.value.code == 2
+    assert capsys.readouterr().err.splitlines()[-1] == (
+        f"assembler render: error: argument --groups: expected geom groups 0 to 5 separated by commas, "
+        f"e.g. 0,1,2; got '{value}'"
+    )
+
+
+def test_the_cli_offers_the_renderers_views_labels_and_groups() -> None:
+    assert tuple(VIEWS) == arguments.VIEWS
+    assert set(arguments.LABELS) == set(LABELS)
+    assert list(arguments.GEOM_GROUPS) == list(range(GROUP_COUNT))

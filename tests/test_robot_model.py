@@ -96,13 +96,16 @@ def test_set_base_xpos_accounts_for_the_bottom_offset(robot: assembler.RobotMode
     np.testing.assert_allclose(data.body("robot3_base").xpos, [0.5, 0.0, -0.1])
 
 
-def test_set_base_ori_is_roll_pitch_yaw_about_fixed_axes(robot: assembler.RobotModel) -> None:
-    robot.set_base_ori(np.array([0.0, 0.0, np.pi / 2]))
+def test_set_base_ori_rotates_by_roll_then_pitch_then_yaw_about_the_moving_axes_as_robosuite(
+    robot: assembler.RobotModel,
+) -> None:
+    # robosuite's euler2mat gives Rx(roll) Ry(pitch) Rz(yaw); Rz Ry Rx would send x to -z here
+    robot.set_base_ori(np.array([np.pi / 2, np.pi / 2, np.pi / 2]))
     model = robot.get_model()
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
-    # the base's x axis now points along world y
-    np.testing.assert_allclose(data.body("robot3_base").xmat.reshape(3, 3)[:, 0], [0, 1, 0], atol=1e-12)
+    axes = data.body("robot3_base").xmat.reshape(3, 3)
+    np.testing.assert_allclose(axes, [[0, 0, 1], [0, -1, 0], [1, 0, 0]], atol=1e-12)  # columns: x, y, z
     with pytest.raises(assembler.AssemblerError, match="expected 3 finite angles"):
         robot.set_base_ori(np.array([0.0, np.nan, 0.0]))
 

@@ -61,7 +61,12 @@ def test_reference_shows_types_defaults_and_required_fields() -> None:
         "| `armature` | number ≥ 0.0 or list of number ≥ 0.0 or [InverseIndexRule](#inverseindexrule) or null "
         '| `{"inverse_index": 5.0}` |' in reference
     )
-    assert "| `mjcf` | string (not empty) | **required** unless `extends` |" in reference
+    assert (
+        "| `mjcf` | string (not empty) or null | this or `urdf` **required** unless `extends` |" in reference
+    )
+    assert (
+        "| `urdf` | string (not empty) or null | this or `mjcf` **required** unless `extends` |" in reference
+    )
     assert '| `important_sites` | mapping of string to string | `{"grip_site": "grip_site", ' in reference
     assert '| `eef_bodies` | mapping of (`"right"` or `"left"`) to string | `{}` |' in reference
 

@@ -17,7 +17,7 @@ from assembler.loader import load_paths
 from assembler.paths import PACKAGE_SCHEME, shipped_specs_dir
 
 # robosuite's parts (specs/robosuite, read from the installed package) are covered by test_parity.py.
-LOADED = [s for s in load_paths([shipped_specs_dir()]) if not s.spec.mjcf.startswith(PACKAGE_SCHEME)]
+LOADED = [s for s in load_paths([shipped_specs_dir()]) if not s.spec.source_file.startswith(PACKAGE_SCHEME)]
 ROBOTS = [s.spec.name for s in LOADED if s.spec.kind == "robot"]  # type: ignore[attr-defined]
 BASES = [s.spec.name for s in LOADED if s.spec.kind == "base"]  # type: ignore[attr-defined]
 GRIPPERS = [s.spec.name for s in LOADED if s.spec.kind == "gripper"]  # type: ignore[attr-defined]

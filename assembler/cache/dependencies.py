@@ -11,7 +11,7 @@ from __future__ import annotations
 import hashlib
 import os
 import time
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import mujoco
@@ -22,6 +22,10 @@ RECENT_NS = 2_000_000_000
 """Files modified this recently are not trusted: MuJoCo's in-process asset cache compares times in
 whole seconds, so a compile may still see the previous content of a mesh edited within the same
 second (ccache refuses too-new files for the same kind of reason)."""
+
+
+KnownDigest = Callable[[str, os.stat_result], "str | None"]
+"""A digest some other record already holds for a file in this exact state (the mesh store's)."""
 
 
 @dataclass(frozen=True)
@@ -50,10 +54,16 @@ class Recorder:
     it may not match the files."""
 
     def __init__(
-        self, paths: Iterable[str], read_earlier: Mapping[str, tuple[int, int]] | None = None
+        self,
+        paths: Iterable[str],
+        read_earlier: Mapping[str, tuple[int, int]] | None = None,
+        known: KnownDigest | None = None,
     ) -> None:
         """``read_earlier``: files already read before the compile (a part's MJCF and its includes,
-        parsed when the part was made), with their stat from then: a change since then is a change."""
+        parsed when the part was made), with their stat from then: a change since then is a change.
+        ``known``: where a file's digest may already be recorded (mesh files hashed by the mesh
+        store), so the writer does not hash them again."""
+        self._known = known
         self._recent = time.time_ns() - RECENT_NS
         self._stats: dict[str, tuple[int, int]] | None = dict(read_earlier or {})
         try:
@@ -70,7 +80,8 @@ class Recorder:
         records = []
         for path, (size, mtime_ns) in self._stats.items():
             try:
-                digest = content_digest(path)
+                digest = self._known(path, os.stat(path)) if self._known is not None else None
+                digest = digest or content_digest(path)
                 stat = os.stat(path)  # after hashing: a change while hashing shows here
             except OSError:
                 return None

@@ -1,5 +1,5 @@
-"""One cache entry's manifest: which model file holds the compiled model, how to recognise that
-file whole, and the files the model was compiled from.
+"""One cache entry's manifest: which model file holds the compiled model (and which file its emitted
+XML, once asked for), how to recognise each file whole, and the files the model was compiled from.
 
 The manifest is small JSON, written after the model file and moved into place last: it is the
 entry's commit point. A model file no manifest names is an orphan (a writer killed between the two
@@ -20,6 +20,7 @@ from assembler.cache.key import FORMAT
 
 MANIFEST_SUFFIX = ".json"
 MODEL_SUFFIX = ".mjb"
+XML_SUFFIX = ".xml"
 DIGEST = "xxh3_128"
 """The hash of a model file's whole content, checked on every load from disk. XXH3 rather than a
 cryptographic hash: it is there to catch a damaged file (any change of any byte), not a forger (a
@@ -54,6 +55,16 @@ class Entry:
     dependencies: tuple[Dependency, ...]
     """Every file the compile read, as it was then."""
 
+    xml: str = ""
+    """File name of the emitted MJCF (``RobotModel.get_xml``), in the cache folder; empty until an
+    XML was asked for."""
+
+    xml_bytes: int = 0
+    """Exact size of the XML file (its UTF-8 bytes)."""
+
+    xml_digest: str = ""
+    """The :data:`DIGEST` of the XML file's whole content."""
+
     @property
     def manifest(self) -> str:
         """File name of this manifest."""
@@ -80,4 +91,6 @@ class Entry:
         named_file = entry.model.endswith(MODEL_SUFFIX) and os.sep not in entry.model
         if not named_file or entry.model_bytes <= 0:
             raise ValueError("not a manifest: bad model file")
+        if entry.xml and (not entry.xml.endswith(XML_SUFFIX) or os.sep in entry.xml or not entry.xml_digest):
+            raise ValueError("not a manifest: bad XML file")
         return entry

@@ -34,8 +34,8 @@ class PartInputs:
     """The validated spec (``extends`` merged, overrides applied) as canonical JSON."""
 
     mjcf: str
-    """The MJCF file the spec names, resolved in this environment (a ``package://`` path differs
-    between environments)."""
+    """The model file the spec names (its ``mjcf``, or its ``urdf``), resolved in this environment (a
+    ``package://`` path differs between environments)."""
 
     idn: str
     """The instance's idn, as ``repr`` writes it (``0`` and ``'0'`` differ)."""

@@ -65,6 +65,11 @@ class MeshSwap:
     _changed: list[tuple[mujoco.MjsMesh, str]] = field(default_factory=list)
     _added: list[str] = field(default_factory=list)
 
+    @property
+    def content_types(self) -> list[tuple[str, str]]:
+        """(mesh name, its own content type) of every mesh now reading stored bytes."""
+        return [(mesh.name, content_type) for mesh, content_type in self._changed]
+
     def restore(self) -> None:
         """Put back every mesh's ``content_type`` and take the stored meshes out of ``spec.assets``
         (a live dict: assigning to it adds to it, so the additions are removed one by one)."""

@@ -140,6 +140,12 @@ class MeshStore:
         record["check"] = _check(json.dumps(fields).encode()).hex()
         self._write(self._record_name(path), json.dumps(record).encode())
 
+    def known_digest(self, path: str, stat: os.stat_result) -> str | None:
+        """The digest recorded for ``path`` in the state ``stat`` describes, if any (no hashing)."""
+        if not settled((stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino)):
+            return None
+        return self.recorded(path, (stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino))
+
     def digest(self, path: str) -> tuple[str, Stat] | None:
         """``path``'s digest and stat, from its record or by hashing it (and recording that);
         None when the file cannot be read or changes while it is hashed."""

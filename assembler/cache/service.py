@@ -6,7 +6,9 @@ Models build MuJoCo specs; this module compiles them. A lookup hashes the build 
 build callback assembles the spec, it is compiled once with its ``home`` keyframe, and the entry is
 written in the background with every file the compile read. The keyframe travels with the model
 (:class:`~assembler.mjcf.keyframe.Keyframe`), so an assembly built later (for its XML) carries
-exactly the keyframe of the model that was handed out.
+exactly the keyframe of the model that was handed out. An entry also keeps the assembly's emitted
+XML once it was asked for (:func:`compile_xml`), so a repeated ``get_xml`` neither builds nor
+compiles.
 """
 
 from __future__ import annotations
@@ -16,12 +18,14 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.cache.dependencies import Recorder, asset_files
+from assembler.cache.dependencies import Recorder, asset_files, verify
+from assembler.cache.emission import compile_and_emit
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
 from assembler.cache.mesh_swap import compile_from_store, wait_for_fillers
 from assembler.cache.meshes import MESH_SHARE, default_mesh_store
+from assembler.cache.requests import default_request_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import CacheInfo, ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
@@ -89,6 +93,9 @@ def clear(store: ModelStore) -> CacheInfo:
     meshes = default_mesh_store()
     if meshes is not None and meshes.directory.parent == store.directory:
         meshes.clear()
+    requests = default_request_store()
+    if requests.directory.parent == store.directory:
+        requests.clear()
     return store.clear()
 
 
@@ -97,6 +104,28 @@ def wait_for_writes() -> None:
     (tests, benchmarks); the interpreter waits for entries at exit by itself, not for mesh fillers."""
     wait_for_entries()
     wait_for_fillers()
+
+
+def load_entry(key: str) -> mujoco.MjModel | None:
+    """The model stored under ``key`` if its files are unchanged (a hit, counted), else None; a
+    model loaded before in this process is copied from memory (:mod:`assembler.cache.memory`)."""
+    models = default_store()
+    place = (str(models.directory), key)
+    model = _recent.get(place)
+    if model is None:
+        models.wait_for(key)
+        found = models.load(key)
+        model = _recent.offer(place, *found) if found is not None else None
+    if model is not None:
+        counts.hits += 1
+    return model
+
+
+def _recorder(assembly: Assembly) -> Recorder:
+    """The recorder of an assembly's files; mesh files the mesh store hashed are not hashed again."""
+    meshes = default_mesh_store()
+    known = meshes.known_digest if meshes is not None else None
+    return Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files, known)
 
 
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
@@ -121,18 +150,55 @@ def compile_model(
         return compile_assembly(build(), meshes=cache)
     keep = store
     models = default_store()
-    place = (str(models.directory), key)
-    model = _recent.get(place)
-    if model is None:
-        found = models.load(key)
-        model = _recent.offer(place, *found) if found is not None else None
+    model = load_entry(key)
     if model is not None:
-        counts.hits += 1
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
     assembly = build()
-    recorder = Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files)
+    recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
     if keep:
         models.save(key, compiled.model, recorder, assembly.label)
     return compiled
+
+
+def compile_xml(
+    inputs: BuildInputs,
+    build: Callable[[], Assembly],
+    cache: bool = True,
+    store: bool = True,
+    meshes: bool = True,
+) -> tuple[CompiledModel | None, str]:
+    """The emitted MJCF of the assembly ``inputs`` describe, and the model when one was compiled.
+
+    From the cache entry when it holds the XML (no build, no compile, the model not even read:
+    None is returned for it); else built once, compiled once and emitted from that same spec
+    (:func:`~assembler.cache.emission.compile_and_emit`), and (with ``store``) kept: the XML is
+    added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
+    False reads meshes from their files rather than the mesh store: a process compiling the same
+    meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from
+    files processed (hulls, normals), and not those given in memory.
+    """
+    key = cache_key(inputs) if cache and not cache_disabled() else None
+    if key is None:
+        counts.bypassed += 1
+        assembly = build()
+        model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache and meshes)
+        return CompiledModel(model, Keyframe.of(model)), xml
+    models = default_store()
+    models.wait_for(key)
+    stored = models.load_xml(key)
+    if stored is not None:
+        counts.hits += 1
+        return None, stored
+    counts.misses += 1
+    assembly = build()
+    recorder = _recorder(assembly)
+    model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
+    if store:
+        entry = models.entry(key)
+        if entry is not None and not entry.xml and verify(entry.dependencies) is not None:
+            models.add_xml(key, xml)  # the model it holds is this one: keep it, add the text
+        else:
+            models.save(key, model, recorder, assembly.label, xml)
+    return CompiledModel(model, Keyframe.of(model)), xml

@@ -1,5 +1,6 @@
-"""The cache folder: one manifest and one model file per entry, written atomically, bounded in
-size with least-recently-used eviction, safe with several processes at once.
+"""The cache folder: one manifest and one model file per entry (and the emitted XML, once asked
+for), written atomically, bounded in size with least-recently-used eviction, safe with several
+processes at once.
 
 There is no shared index that a crash or a race could corrupt: the folder is the index. Every
 file is written under a temporary name in the same folder and moved into place with one rename,
@@ -8,8 +9,8 @@ removed by a later clean-up once it is old. A lookup touches the manifest, so it
 time is the entry's last use, and eviction (after each write) drops the least recently used
 entries until the folder fits the limit. Two processes filling one entry each write their own
 model file and the last manifest wins; the other model file becomes an orphan and is removed.
-Anything unreadable (a truncated manifest, a model file whose size or content digest differs from
-its manifest's) is a miss and is removed, never an error and never a wrong model.
+Anything unreadable (a truncated manifest, a model or XML file whose size or content digest
+differs from its manifest's) is a miss and is removed, never an error and never a wrong model.
 """
 
 from __future__ import annotations
@@ -30,17 +31,19 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.dependencies import Dependency, Recorder, verify
-from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, Entry, content_digest
+from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry, content_digest
 from assembler.mjcf import mujoco_warnings
 
 TEMP_SUFFIX = ".tmp"
 GRACE_SECONDS = 600.0
 """A temporary or unreferenced model file younger than this may belong to a writer still at work."""
 
-_OWN_FILE = re.compile(r"^\.?[0-9a-f]{40}(-[0-9a-f]{12}\.mjb|\.json)(\.\w+\.tmp)?$")
-"""Manifests, model files and their temporary files (see :class:`Entry` and ``_write``)."""
+_OWN_FILE = re.compile(r"^\.?[0-9a-f]{40}(-[0-9a-f]{12}\.(mjb|xml)|\.json)(\.\w+\.tmp)?$")
+"""Manifests, model and XML files and their temporary files (see :class:`Entry` and ``_write``)."""
 
 _writers: list[threading.Thread] = []
+_pending: dict[tuple[str, str], threading.Thread] = {}
+"""(folder, key) -> the thread writing that entry: a lookup of it in this process waits for it."""
 
 
 def wait_for_writes() -> None:
@@ -96,6 +99,13 @@ class ModelStore:
 
     # ----- lookup -------------------------------------------------------------------------
 
+    def wait_for(self, key: str) -> None:
+        """Wait until this process's write of the entry ``key``, if one is under way, is done:
+        the entry just compiled is then found rather than compiled again."""
+        writer = _pending.get((str(self.directory), key))
+        if writer is not None:
+            writer.join()
+
     def _read_entry(self, key: str) -> Entry | None:
         try:
             text = (self.directory / (key + MANIFEST_SUFFIX)).read_text(encoding="utf-8")
@@ -107,6 +117,10 @@ class ModelStore:
             self._remove(key + MANIFEST_SUFFIX)
             return None
         return entry if entry.key == key else None
+
+    def entry(self, key: str) -> Entry | None:
+        """The manifest stored under ``key``, unchecked (its files may have changed)."""
+        return self._read_entry(key)
 
     def _open_model(self, entry: Entry) -> mujoco.MjModel | None:
         """The entry's model, if its file is whole: its exact size and content digest, and MuJoCo
@@ -144,12 +158,56 @@ class ModelStore:
             self._touch(entry.manifest)
         return model, tuple(current)
 
+    def load_xml(self, key: str) -> str | None:
+        """The XML stored with the entry ``key``, if the entry has one, every file it was compiled
+        from is unchanged and the XML file is whole (else it is removed: a miss). The model file
+        is not read: the XML does not need it."""
+        entry = self._read_entry(key)
+        if entry is None or not entry.xml or verify(entry.dependencies) is None:
+            return None
+        try:
+            data = (self.directory / entry.xml).read_bytes()
+            if len(data) == entry.xml_bytes and content_digest(data) == entry.xml_digest:
+                with contextlib.suppress(OSError):
+                    self._touch(entry.manifest)
+                return data.decode("utf-8")
+        except (OSError, UnicodeDecodeError):
+            pass
+        self._drop_xml(entry)
+        return None
+
+    def _drop_xml(self, entry: Entry) -> None:
+        """Forget a broken XML file: the manifest keeps its model, without the XML."""
+        latest = self._read_entry(entry.key)
+        if latest is not None and latest.xml == entry.xml:
+            with contextlib.suppress(OSError):
+                self._write(entry.manifest, replace(latest, xml="", xml_bytes=0, xml_digest=""))
+        self._remove(entry.xml)
+
+    def add_xml(self, key: str, xml: str) -> None:
+        """Keep ``xml`` with the entry ``key`` (written by an earlier compile), if it is there; a
+        cache that cannot be written only means the XML is emitted again next time."""
+        entry = self._read_entry(key)
+        if entry is None or entry.xml:
+            return
+        data = xml.encode("utf-8")
+        name = f"{key}-{secrets.token_hex(6)}{XML_SUFFIX}"
+        try:
+            self._write(name, data)
+            latest = self._read_entry(key)
+            if latest is None or latest.model != entry.model or latest.xml:
+                self._remove(name)  # replaced meanwhile by another process: its entry stands
+                return
+            self._write(entry.manifest, _with_xml(latest, name, data))
+        except OSError:
+            self._remove(name)
+
     def _discard(self, entry: Entry) -> None:
         """Remove a broken entry; its manifest only if no other process has replaced it since."""
         latest = self._read_entry(entry.key)
         if latest is not None and latest.model == entry.model:
             self._remove(entry.manifest)
-        self._remove(entry.model)
+        self._remove(entry.model, entry.xml)
 
     def _touch(self, name: str) -> None:
         """Mark an entry used now. The clock's nanoseconds, not the file system's coarser tick
@@ -159,19 +217,25 @@ class ModelStore:
 
     # ----- writing ------------------------------------------------------------------------
 
-    def _write(self, name: str, content: Entry | NDArray[np.uint8]) -> None:
+    def _write(self, name: str, content: Entry | NDArray[np.uint8] | bytes) -> None:
         self.directory.mkdir(parents=True, exist_ok=True)
         handle, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=TEMP_SUFFIX, dir=self.directory)
         try:
             with os.fdopen(handle, "wb") as stream:
-                stream.write(content.to_json().encode() if isinstance(content, Entry) else content.data)
+                if isinstance(content, Entry):
+                    stream.write(content.to_json().encode())
+                else:
+                    stream.write(content if isinstance(content, bytes) else content.data)
             os.replace(temporary, self.directory / name)
         except BaseException:
             Path(temporary).unlink(missing_ok=True)
             raise
 
-    def save(self, key: str, model: mujoco.MjModel, recorder: Recorder, label: str) -> None:
-        """Store ``model`` under ``key``, replacing an older entry, then evict down to the limit.
+    def save(
+        self, key: str, model: mujoco.MjModel, recorder: Recorder, label: str, xml: str | None = None
+    ) -> None:
+        """Store ``model`` (and its emitted ``xml``, when given) under ``key``, replacing an older
+        entry, then evict down to the limit.
 
         The model is serialised now (the caller may change it next); hashing its input files and
         writing the entry happen in a background thread, so a cold load costs little more than
@@ -189,28 +253,47 @@ class ModelStore:
             label=label,
             dependencies=(),
         )
+        text = xml.encode("utf-8") if xml is not None else None
+        if text is not None:
+            entry = _with_xml(entry, f"{key}-{secrets.token_hex(6)}{XML_SUFFIX}", text)
         writer = threading.Thread(
-            target=self._commit, args=(entry, buffer, recorder), name="assembler-cache-writer"
+            target=self._commit, args=(entry, buffer, recorder, text), name="assembler-cache-writer"
         )
         _writers.append(writer)
+        _pending[(str(self.directory), key)] = writer
         writer.start()
 
-    def _commit(self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder) -> None:
+    def _commit(self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder, xml: bytes | None) -> None:
+        try:
+            self._commit_now(entry, buffer, recorder, xml)
+        finally:
+            _pending.pop((str(self.directory), entry.key), None)
+
+    def _commit_now(
+        self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder, xml: bytes | None
+    ) -> None:
         dependencies = recorder.result()
         if dependencies is None:
             return
         entry = replace(entry, dependencies=tuple(dependencies))
         key = entry.key
+        current = self._read_entry(key)
+        if current is not None and current.xml and not entry.xml and verify(current.dependencies) is not None:
+            return  # the same model from the same files, with its XML already: keep that one
         try:
             self._write(entry.model, buffer)
+            if xml is not None:
+                self._write(entry.xml, xml)
             previous = self._read_entry(key)
             self._write(entry.manifest, entry)
             self._touch(entry.manifest)
         except OSError:
-            self._remove(entry.model)
+            self._remove(entry.model, entry.xml)
             return
         if previous is not None and previous.model != entry.model:
             self._remove(previous.model)
+        if previous is not None and previous.xml != entry.xml:
+            self._remove(previous.xml)
         self.evict()
 
     # ----- housekeeping -------------------------------------------------------------------
@@ -241,12 +324,12 @@ class ModelStore:
                     manifests.append((stat.st_mtime_ns, item.name, stat.st_size))
                 else:
                     sizes[item.name] = (stat.st_size, stat.st_mtime)
-        models: dict[str, str] = {}  # manifest -> its model file
+        models: dict[str, tuple[str, str]] = {}  # manifest -> its model and XML files
         for _, name, _ in manifests:
             entry = self._read_entry(name.removesuffix(MANIFEST_SUFFIX))
             if entry is not None:
-                models[name] = entry.model
-        referenced = set(models.values())
+                models[name] = (entry.model, entry.xml)
+        referenced = {file for files in models.values() for file in files if file}
         for name, (_, mtime) in list(sizes.items()):
             if name not in referenced and now - mtime > GRACE_SECONDS:
                 self._remove(name)
@@ -255,9 +338,9 @@ class ModelStore:
         for _, name, size in sorted(manifests):
             if total <= self.max_bytes:
                 break
-            model = models.get(name, "")
-            total -= size + sizes.get(model, (0, 0.0))[0]
-            self._remove(name, model)
+            files = models.get(name, ("", ""))
+            total -= size + sum(sizes.get(file, (0, 0.0))[0] for file in files)
+            self._remove(name, *files)
 
     def info(self) -> CacheInfo:
         """Location, number of entries, bytes used and the limit."""
@@ -282,3 +365,8 @@ class ModelStore:
             except OSError as error:
                 failed.append(f"{item.name}: {error.strerror}")
         return replace(before, not_removed=tuple(failed))
+
+
+def _with_xml(entry: Entry, name: str, data: bytes) -> Entry:
+    """``entry`` naming ``name`` as its XML file, whose content is ``data``."""
+    return replace(entry, xml=name, xml_bytes=len(data), xml_digest=content_digest(data))

@@ -23,6 +23,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     def command() -> int:
         args = parse(argv)
+        if args.command == "build":  # a build made before is answered before any spec is read
+            answered = importlib.import_module("assembler.cli.quick_build").answer(args)
+            if answered is not None:
+                return int(answered)
         dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
         return int(dispatch.run_command(args))
 

@@ -111,6 +111,20 @@ def image_size(text: str) -> tuple[int, int]:
     return size
 
 
+GEOM_GROUPS = range(6)
+"""MuJoCo's geom groups (``mjNGROUP``); ``assembler.geom_groups.GROUP_COUNT`` (a test keeps them equal)."""
+
+
+def geom_groups(text: str) -> tuple[int, ...]:
+    """``--groups 0,1,2`` as sorted distinct groups."""
+    items = [item.strip() for item in text.split(",") if item.strip()]
+    if not items or not all(item.isdigit() and int(item) in GEOM_GROUPS for item in items):
+        raise argparse.ArgumentTypeError(
+            f"expected geom groups 0 to {GEOM_GROUPS[-1]} separated by commas, e.g. 0,1,2; got '{text}'"
+        )
+    return tuple(sorted({int(item) for item in items}))
+
+
 def _output(parser: argparse.ArgumentParser, what: str = "output XML file") -> None:
     parser.add_argument("-o", "--output", help=f"{what} (default: standard output)")
 
@@ -229,6 +243,13 @@ def _render(parser: argparse.ArgumentParser) -> None:
         metavar="WxH",
         help="size of each view (default 640x480)",
     )
+    parser.add_argument(
+        "--groups",
+        type=geom_groups,
+        metavar="G,G",
+        help="geom groups to draw, e.g. 0,1,2 (default: each part's visual groups 1 and 2, or its "
+        "collision group 0 when it has no visual geoms)",
+    )
 
 
 def _cache(parser: argparse.ArgumentParser) -> None:
@@ -266,7 +287,12 @@ COMMANDS: tuple[Command, ...] = (
         _variants,
         "assembler.cli.variants",
     ),
-    Command("inspect", "joint parameters and where each value came from", _inspect, "assembler.cli.inspect"),
+    Command(
+        "inspect",
+        "joint parameters and actuators, and where each value came from",
+        _inspect,
+        "assembler.cli.inspect",
+    ),
     Command(
         "schema", "print the JSON Schema of spec files (or --markdown docs)", _schema, "assembler.cli.schema"
     ),

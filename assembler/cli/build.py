@@ -1,4 +1,6 @@
-"""``assembler build``: write a robot's standalone MJCF (to a file, a bundle folder or stdout)."""
+"""``assembler build``: write a robot's standalone MJCF (to a file, a bundle folder or stdout), and
+record the request so the same build next time is answered before any spec is read
+(:mod:`assembler.cli.quick_build`)."""
 
 from __future__ import annotations
 
@@ -6,23 +8,19 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.cli.common import assembled, use_cache, warn_idle_overrides
-from assembler.mjcf.emit import bundle
-from assembler.paths import display_path
+from assembler.cli.common import assembled, idle_override_warnings, use_cache
+from assembler.cli.quick_build import build_request, robot_file, write_xml
+from assembler.requesting import record_answer
 
 
 def run(args: argparse.Namespace) -> int:
     robot = assembled(args)
-    cache = use_cache(args)
-    if args.bundle:
-        name = Path(args.output).name if args.output else f"{type(robot).__name__}.xml"
-        robot.get_model(cache=cache)  # compile first: a robot that does not compile writes nothing
-        target = bundle(robot.mjspec, Path(args.bundle), name)
-        print(f"wrote {display_path(target)} with its assets", file=sys.stderr)
-    elif args.output:
-        target = robot.save(args.output, cache=cache)
-        print(f"wrote {display_path(target)}", file=sys.stderr)
-    else:
-        sys.stdout.write(robot.get_xml(cache=cache))
-    warn_idle_overrides(args)
+    xml = robot.get_xml(cache=use_cache(args))  # compiled first: a robot that does not compile writes nothing
+    write_xml(args, xml, type(robot).__name__)
+    notes = idle_override_warnings(args)
+    for note in notes:
+        print(note, file=sys.stderr)
+    request = build_request(args)
+    if request is not None:
+        record_answer(request, robot, [Path(folder) for folder in args.specs], robot_file(args), notes)
     return 0

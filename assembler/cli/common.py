@@ -4,7 +4,6 @@ and printing aligned tables."""
 from __future__ import annotations
 
 import argparse
-import sys
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -63,17 +62,16 @@ def assembled(args: argparse.Namespace, overrides: Sequence[Override] | None = N
     return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
 
 
-def warn_idle_overrides(args: argparse.Namespace) -> None:
+def idle_override_warnings(args: argparse.Namespace) -> list[str]:
     """A warning line per ``--set`` that changes nothing in the compiled model."""
     idle = overrides_without_effect(
         lambda changes: assembled(args, changes), override_flags(args), use_cache(args)
     )
-    for override in idle:
-        print(
-            f"warning: {override.label}{override.key} changes nothing in the compiled model; "
-            "see what else in the spec sets it",
-            file=sys.stderr,
-        )
+    return [
+        f"warning: {override.label}{override.key} changes nothing in the compiled model; "
+        "see what else in the spec sets it"
+        for override in idle
+    ]
 
 
 def use_cache(args: argparse.Namespace) -> bool:

@@ -1,4 +1,4 @@
-"""``assembler inspect``: every joint parameter of a robot and where each value came from."""
+"""``assembler inspect``: every joint parameter and actuator of a robot and where each value came from."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ import argparse
 import json
 
 from assembler.cli.common import bare_robot, override_flags, table
+from assembler.models.actuator_table import ActuatorRecord
 from assembler.paths import display_path
 from assembler.schema import JOINT_RULE_ATTRIBUTES
 
@@ -21,7 +22,17 @@ def run(args: argparse.Namespace) -> int:
             }
             for joint, values in robot.joint_values.items()
         }
-        print(json.dumps({"robot": type(robot).__name__, "dof": robot.dof, "joints": joints}, indent=2))
+        actuators = {
+            robot.naming_prefix + record.name: {
+                "joint": robot.naming_prefix + record.joint if record.joint is not None else None,
+                "type": record.type,
+                "source": record.source,
+                "values": {k: {"value": v, "source": s} for k, (v, s) in record.values.items()},
+            }
+            for record in robot.actuator_table
+        }
+        summary = {"robot": type(robot).__name__, "dof": robot.dof, "joints": joints, "actuators": actuators}
+        print(json.dumps(summary, indent=2))
         return 0
     loaded = type(robot).loaded
     print(f"{type(robot).__name__}: {robot.spec.morphology}, {robot.dof} dof, prefix {robot.naming_prefix}")
@@ -29,7 +40,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"spec: {loaded.source}")
     if changes:
         print("overrides: " + ", ".join(f"{c.key}={json.dumps(c.value, default=str)}" for c in changes))
-    print(f"mjcf: {display_path(robot.source.path)}")
+    print(f"{robot.spec.source_field}: {display_path(robot.source.path)}")
+    for note in robot.source.notes:
+        print(f"note: {note}")
     attributes = list(JOINT_RULE_ATTRIBUTES) + sorted(
         {a for values in robot.joint_values.values() for a in values} - set(JOINT_RULE_ATTRIBUTES)
     )
@@ -41,4 +54,17 @@ def run(args: argparse.Namespace) -> int:
             cells.append(f"{value.value:.6g}  {value.source}" if value else "-  (MuJoCo default)")
         rows.append(cells)
     print(table(rows))
+    if robot.actuator_table:
+        print()
+        print(table(_actuator_rows(robot.naming_prefix, robot.actuator_table)))
     return 0
+
+
+def _actuator_rows(prefix: str, records: list[ActuatorRecord]) -> list[list[str]]:
+    """One row per actuator: its joint, type and source, then each value with where it came from."""
+    rows = [["actuator", "joint", "type", "source", "values"]]
+    for record in records:
+        values = "; ".join(f"{name} {value} ({source})" for name, (value, source) in record.values.items())
+        joint = prefix + record.joint if record.joint is not None else "-"
+        rows.append([prefix + record.name, joint, record.type, record.source, values or "-"])
+    return rows

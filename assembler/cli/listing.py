@@ -1,42 +1,72 @@
-"""``assembler list``: the registered robots, bases or grippers, with their size and spec file."""
+"""``assembler list``: the registered robots, bases or grippers, by name, with their size and spec file.
+
+Spec files are shown short: relative to the working directory when below it, and shipped specs
+as ``specs/...`` (where they sit in a checkout) even when read from an installed package's
+``site-packages/assembler/_shipped/specs``.
+"""
 
 from __future__ import annotations
 
 import argparse
+from collections.abc import Mapping
+from pathlib import Path
+from typing import TypeVar
 
 from assembler.cli.common import table
 from assembler.errors import AssemblerError, MissingPackageError
 from assembler.models import PartModel
-from assembler.paths import display_path
+from assembler.paths import display_path, shipped_specs_dir
 from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 
 def _dof_text(cls: type[PartModel]) -> str:
     try:
         return str(cls(idn=0).dof_joints)
-    except MissingPackageError:
-        return "? (robosuite not installed)"
+    except MissingPackageError as error:
+        return f"? ({error.package or 'a package'} not installed)"
     except AssemblerError:
         return "? (invalid: run assembler validate)"
 
 
+def short_path(path: Path) -> str:
+    """A spec file as a user reads it: below the working directory, or ``specs/...`` when shipped."""
+    shown = display_path(path)
+    if not Path(shown).is_absolute():
+        return shown
+    shipped = shipped_specs_dir().resolve()
+    if path.is_relative_to(shipped):
+        return str(Path(shipped.name) / path.relative_to(shipped))
+    return shown
+
+
 def _source(cls: type[PartModel]) -> str:
     loaded = cls.loaded
-    return display_path(loaded.document.file) if loaded is not None else cls.__module__
+    if loaded is None:
+        return cls.__module__
+    path = loaded.document.path
+    return short_path(path) if path is not None else loaded.document.file
+
+
+P = TypeVar("P", bound=PartModel)
+
+
+def _by_name(registry: Mapping[str, type[P]]) -> list[tuple[str, type[P]]]:
+    """Entries sorted by name as people sort them (``GR1`` before ``Gx``, ``iiwa`` beside ``IIWA``)."""
+    return sorted(registry.items(), key=lambda item: (item[0].casefold(), item[0]))
 
 
 def run(args: argparse.Namespace) -> int:
     if args.what == "bases":
         rows: list[tuple[str, ...]] = [("base", "type", "joints", "spec")]
-        for name, base in REGISTERED_BASES.items():
+        for name, base in _by_name(REGISTERED_BASES):
             rows.append((name, base.spec.type, _dof_text(base), _source(base)))
     elif args.what == "grippers":
         rows = [("gripper", "joints", "spec")]
-        for name, gripper in REGISTERED_GRIPPERS.items():
+        for name, gripper in _by_name(REGISTERED_GRIPPERS):
             rows.append((name, _dof_text(gripper), _source(gripper)))
     else:
         rows = [("robot", "morphology", "dof", "spec")]
-        for name, robot in REGISTERED_ROBOTS.items():
+        for name, robot in _by_name(REGISTERED_ROBOTS):
             rows.append((name, robot.spec.morphology, _dof_text(robot), _source(robot)))
     print(table(rows))
     return 0

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from assembler.cli.common import assembled
 from assembler.paths import display_path
-from assembler.render import encode_png, render_robot
+from assembler.render import encode_png, take_picture
 from assembler.render.picture import check_views
 from assembler.writing import write_atomically
 
@@ -17,11 +17,12 @@ def run(args: argparse.Namespace) -> int:
     views = [view.strip() for view in args.views.split(",") if view.strip()]
     check_views(views)  # before the robot is built: a typo should fail fast
     width, height = args.size
-    image = render_robot(assembled(args), views, width, height, args.labels)
+    picture = take_picture(assembled(args), views, width, height, args.labels, args.groups)
     target = Path(args.output)
-    write_atomically(target, encode_png(image))
+    write_atomically(target, encode_png(picture.image))
+    height, width, _ = picture.image.shape
     print(
-        f"wrote {display_path(target)} ({image.shape[1]}x{image.shape[0]}, {', '.join(views)})",
+        f"wrote {display_path(target)} ({width}x{height}, {', '.join(views)}; {picture.shown})",
         file=sys.stderr,
     )
     return 0

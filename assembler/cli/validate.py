@@ -1,13 +1,36 @@
-"""``assembler validate``: check spec files and folders (schema, names, optionally a compile)."""
+"""``assembler validate``: check spec files and folders (schema, names, optionally a compile).
+
+The summary counts what was done to each spec: validated against its MJCF (and compiled, with
+``--compile``), or only validated because the package holding its MJCF is not installed.
+"""
 
 from __future__ import annotations
 
 import argparse
-import sys
 
 from assembler.cli.report import print_problems
 from assembler.errors import AssemblerError
-from assembler.validation import validate_specs
+from assembler.validation import ValidationReport, validate_specs
+
+
+def summary(report: ValidationReport, compiled: bool) -> list[str]:
+    """One line per outcome with its count and names, e.g. ``12 spec(s) validated and compiled: ...``."""
+    unchecked = set(report.unchecked)
+    checked = [cls.__name__ for cls in report.classes if cls.__name__ not in unchecked]
+    lines = []
+    if checked or not (unchecked or report.placements):
+        what = "validated and compiled" if compiled else "valid"
+        lines.append(f"{len(checked)} spec(s) {what}: {', '.join(checked)}")
+    if unchecked:
+        lines.append(
+            f"{len(unchecked)} spec(s) valid but not checked against their model file"
+            f"{' nor compiled' if compiled else ''}: {', '.join(report.unchecked)}"
+        )
+        lines += [f"    because: {package.message}" for package in report.missing.values()]
+    if report.placements:
+        files = ", ".join(report.placements)
+        lines.append(f"{len(report.placements)} scene and experiment file(s) valid: {files}")
+    return lines
 
 
 def run(args: argparse.Namespace) -> int:
@@ -19,11 +42,5 @@ def run(args: argparse.Namespace) -> int:
     except AssemblerError as error:  # printed in the chosen format (GitHub annotations in CI)
         print_problems(error.problems, args.format)
         return 1
-    if report.unchecked:
-        print(
-            f"note: {len(report.unchecked)} spec(s) checked without their MJCF ({report.missing})",
-            file=sys.stderr,
-        )
-    what = "validated and compiled" if args.compile else "valid"
-    print(f"{len(report.classes)} spec(s) {what}: {', '.join(c.__name__ for c in report.classes)}")
+    print("\n".join(summary(report, args.compile)))
     return 0

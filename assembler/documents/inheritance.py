@@ -23,6 +23,13 @@ SPEC_SUFFIXES = (".yaml", ".yml")
 NOT_INHERITED: tuple[str, ...] = ("name", "extends")
 """Fields a child never takes from its parent."""
 
+REPLACED_BY: dict[str, tuple[str, ...]] = {
+    "urdf": ("mjcf", "mjcf_fixes"),
+    "mjcf": ("urdf", "balance_inertia"),
+}
+"""A child's model file field -> the parent's fields it replaces: a spec names exactly one model
+file (``mjcf`` or ``urdf``), and what repairs one kind of file does not follow it to the other."""
+
 EXTENDS = FieldPath(("extends",))
 
 
@@ -51,10 +58,13 @@ def _without(marks: Mapping[FieldPath, Location], skipped: tuple[str, ...]) -> d
 
 
 def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
-    """The child's fields over the parent's: mappings merge key by key, anything else replaces."""
-    data = copy.deepcopy({k: v for k, v in parent.data.items() if k not in NOT_INHERITED})
-    fields = _without(parent.fields, NOT_INHERITED)
-    values = _without(parent.values, NOT_INHERITED)
+    """The child's fields over the parent's: mappings merge key by key, anything else replaces
+    (and a child's model file replaces the parent's of the other kind, see :data:`REPLACED_BY`)."""
+    replaced = tuple(field for key, fields in REPLACED_BY.items() if key in child.data for field in fields)
+    skipped = (*NOT_INHERITED, *replaced)
+    data = copy.deepcopy({k: v for k, v in parent.data.items() if k not in skipped})
+    fields = _without(parent.fields, skipped)
+    values = _without(parent.values, skipped)
 
     def overlay(target: dict[str, Any], source: dict[str, Any], prefix: FieldPath) -> None:
         for key, value in source.items():
@@ -75,7 +85,13 @@ def merge(parent: LocatedDocument, child: LocatedDocument) -> LocatedDocument:
     if TOP in child.fields:
         fields[TOP] = child.fields[TOP]
     return LocatedDocument(
-        data=data, file=child.file, folder=child.folder, path=child.path, fields=fields, values=values
+        data=data,
+        file=child.file,
+        folder=child.folder,
+        path=child.path,
+        fields=fields,
+        values=values,
+        origins=tuple(dict.fromkeys((*child.origins, *parent.origins))),
     )
 
 

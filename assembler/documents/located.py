@@ -29,6 +29,10 @@ class LocatedDocument:
     path: Path | None = None
     """The file the document was read from, resolved (None for text given directly)."""
 
+    origins: tuple[tuple[str, int, int], ...] = ()
+    """(file, size, mtime_ns when read) of every file this document's data came from: its own, then
+    its parents' (``extends``). Request records (:mod:`assembler.cache.requests`) check them."""
+
     fields: dict[FieldPath, Location] = field(default_factory=dict)
     """Where each field is written: a mapping entry's key, a list item's value, the document's start."""
 

@@ -150,6 +150,7 @@ def apply_overrides(
         path=document.path,
         fields=fields,
         values=values,
+        origins=document.origins,
     )
 
 

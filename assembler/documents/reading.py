@@ -7,6 +7,7 @@ check the result with the kind's pydantic model, and report every problem with i
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import TypeVar
 
@@ -20,7 +21,7 @@ from assembler.errors import Problem, SpecError
 from assembler.fieldpath import FieldPath
 from assembler.paths import display_path, resolve_model_path
 
-PATH_FIELDS: tuple[str, ...] = ("mjcf",)
+PATH_FIELDS: tuple[str, ...] = ("mjcf", "urdf")
 """Top-level fields holding file references, resolved against the folder of the file that wrote them."""
 
 M = TypeVar("M", bound=BaseModel)
@@ -44,8 +45,14 @@ def resolve_path_fields(document: LocatedDocument) -> None:
 def read_document(path: Path) -> LocatedDocument:
     """A spec file's YAML with positions, its file references made absolute."""
     shown = display_path(path)
+    try:
+        stat: os.stat_result | None = path.stat()  # before reading: a change while reading shows
+    except OSError:
+        stat = None  # reading says what is wrong
     document = parse_yaml(read_yaml_text(path, shown), shown, path.parent.resolve())
     document.path = path.resolve()
+    if stat is not None:
+        document.origins = ((str(document.path), stat.st_size, stat.st_mtime_ns),)
     resolve_path_fields(document)
     return document
 

@@ -13,6 +13,7 @@ RA401  warning   armature from the inverse-index rule shrunk below 0.2
 RA501  error     end-effector body or gripper site/geom/sensor missing from the model
 RA502  warning   gripper with fingers but no left/right_fingerpad geoms declared
 RA503  warning   important geom that cannot collide
+RA504  warning   part with no visual geoms (invisible to robosuite's cameras)
 RA601  error     home keyframe outside a joint's range
 =====  ========  ===================================================================
 
@@ -35,6 +36,7 @@ from assembler.lint.keyframe import keyframe_outside_limits
 from assembler.lint.mass import degenerate_inertia, implausible_density, oversized_inertia
 from assembler.lint.penetration import self_penetration
 from assembler.lint.target import LintTarget, part_target, robot_target
+from assembler.lint.visibility import invisible_parts
 
 Check = Callable[[LintTarget], Iterator[Finding]]
 
@@ -49,6 +51,7 @@ CHECKS: tuple[Check, ...] = (
     missing_important_names,
     missing_fingerpads,
     important_geoms_without_contact,
+    invisible_parts,
     keyframe_outside_limits,
 )
 """Every check, in the order of their codes."""

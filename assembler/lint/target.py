@@ -65,13 +65,13 @@ class LintTarget:
         return part.loaded.location(path)
 
     def element_location(self, tags: Sequence[str], name: str) -> Location | None:
-        """The line of the MJCF element ``name`` (prefixed), else the part's ``mjcf`` spec field."""
+        """The line of the MJCF element ``name`` (prefixed), else the part's model file spec field."""
         part = self.part_of(name)
         if part is None:
             return None
         local = name[len(part.naming_prefix) :]
         return mjcf_element_location(part.source.path, tags, local) or self.spec_location(
-            part, FieldPath(("mjcf",))
+            part, FieldPath((part.spec.source_field,))
         )
 
 

@@ -1,4 +1,4 @@
-"""Add a spec's declared joints (and their velocity actuators) to a part's MjSpec."""
+"""Add a spec's declared joints (and their velocity actuators) to a part's MjSpec, or a free joint."""
 
 from __future__ import annotations
 
@@ -32,6 +32,18 @@ def add_joints(spec: mujoco.MjSpec, joints: Sequence[AddedJoint]) -> None:
             joint.range = list(added.range)
         if added.actuator is not None:
             _add_velocity_actuator(spec, added.name, added.actuator)
+
+
+def add_free_joint(spec: mujoco.MjSpec) -> None:
+    """Give the root body a free joint (it floats); it must have no joint yet."""
+    root = spec.worldbody.first_body()
+    if len(root.joints):
+        names = ", ".join(joint.name or "(unnamed)" for joint in root.joints)
+        raise MjcfError(
+            f"the root body '{root.name}' already has joints ({names}); a free joint must be its only "
+            "joint (a file with a free joint floats already: leave add_free_joint out)"
+        )
+    root.add_freejoint()
 
 
 def _add_velocity_actuator(spec: mujoco.MjSpec, joint: str, declared: VelocityActuator) -> None:

@@ -84,8 +84,10 @@ def attach_robot_on_support(
 
     The result is ``<robot root>`` (pose of the robot's root; for a legged base, its free joint and
     the robot root's inertia) -> base root, moved to ``offset`` -> ... -> ``support_body`` ->
-    ``<robot prefix>manipulator_mount`` (the robot's former root: its children, sites and cameras;
-    no inertia, no free joint, as in robosuite) -> the arm.
+    ``<robot prefix>manipulator_mount`` (the robot's former root: its children, geoms, sites and
+    cameras; no free joint, as in robosuite) -> the arm. On a mobile base the mount's mass comes from
+    its geoms, as in robosuite; on a legged base it has none (robosuite keeps the root's geoms and
+    inertial on the outer body there, which carries the root's inertia here).
     """
     root = robot.worldbody.first_body()
     outer = assembly.worldbody.add_body(name=robot_prefix + root.name, pos=root.pos, quat=root.quat)
@@ -104,20 +106,34 @@ def attach_robot_on_support(
     support = find_body(assembly, base_prefix + support_body, "base support body")
 
     move_world_elements(robot, assembly, robot_prefix)
+    for exclude in robot.excludes:  # they name bodies by text: follow the root to its new name
+        if exclude.bodyname1 == root.name:
+            exclude.bodyname1 = MANIPULATOR_MOUNT
+        if exclude.bodyname2 == root.name:
+            exclude.bodyname2 = MANIPULATOR_MOUNT
     root.name = MANIPULATOR_MOUNT
     root.pos = [0.0, 0.0, 0.0]
     root.quat = [1.0, 0.0, 0.0, 0.0]
-    root.explicitinertial = False
-    root.mass = 0.0
-    root.inertia = [0.0, 0.0, 0.0]
-    root.ipos = [0.0, 0.0, 0.0]
-    root.iquat = [1.0, 0.0, 0.0, 0.0]
+    drop_inertial(root, keep_zero=legged)
     for joint in list(root.joints):
         if joint.type == FREE:
             robot.delete(joint)
     attach(assembly, robot, support.add_frame(), robot_prefix)
     # robosuite appends a base's actuators after the robot's: keep that control order.
     move_actuators_last(assembly, base_actuators)
+
+
+def drop_inertial(body: mujoco.MjsBody, keep_zero: bool) -> None:
+    """Remove the body's ``<inertial>``: MuJoCo then infers it from the body's geoms, as robosuite's
+    add_mobile_base does when it leaves out the root's ``<inertial>`` (robot_model.py:209-217). With
+    ``keep_zero`` the body gets an explicit inertial of zero mass instead."""
+    body.mass = 0.0
+    body.inertia = [0.0, 0.0, 0.0]
+    body.iquat = [1.0, 0.0, 0.0, 0.0]
+    body.fullinertia = [float("nan"), 0.0, 0.0, 0.0, 0.0, 0.0]
+    body.explicitinertial = keep_zero
+    # MjSpec marks a body without <inertial> by an undefined (NaN) inertial position.
+    body.ipos = [0.0, 0.0, 0.0] if keep_zero else [float("nan"), 0.0, 0.0]
 
 
 _NOT_COPIED = frozenset(

@@ -94,7 +94,14 @@ def _safe_name(name: str) -> str:
 
 
 def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
-    """Write ``directory/xml_name`` and copies of every asset file under ``directory/assets``.
+    """Write ``directory/xml_name`` and copies of every asset file under ``directory/assets``
+    (see :func:`bundle_xml`)."""
+    return bundle_xml(to_xml(spec), directory, xml_name)
+
+
+def bundle_xml(xml: str, directory: Path, xml_name: str) -> Path:
+    """Write the emitted MJCF ``xml`` as ``directory/xml_name`` and copies of every asset file it
+    names under ``directory/assets``.
 
     Asset paths in the XML become relative, so the folder can be moved or zipped. Two different
     files with one base name get distinct names (``link.stl``, ``link_1.stl``). The paths are
@@ -102,7 +109,7 @@ def bundle(spec: mujoco.MjSpec, directory: Path, xml_name: str) -> Path:
     """
     if Path(xml_name).name != xml_name or xml_name in ("", ".", ".."):
         raise AssemblerError(f"bundle: expected a file name for the XML, got '{xml_name}'")
-    root = ET.fromstring(to_xml(spec))
+    root = ET.fromstring(xml)
     assets = directory / "assets"
     with undone_on_failure(assets) as created:
         make_folder(assets)

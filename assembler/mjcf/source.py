@@ -14,8 +14,8 @@ from __future__ import annotations
 import functools
 import os
 import xml.etree.ElementTree as ET
-from collections.abc import Collection, Sequence
-from dataclasses import dataclass
+from collections.abc import Collection, Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import mujoco
@@ -52,6 +52,10 @@ class MjcfSource:
     authored: tuple[Authored, ...]
     files: tuple[tuple[str, int, int], ...] = ()
     """The file and every file it includes, as (path, size, mtime_ns) when they were read."""
+    velocity_limits: Mapping[str, float] = field(default_factory=dict)
+    """Joint velocity limits the file gives (a URDF's ``<limit velocity>``; MJCF has none)."""
+    notes: tuple[str, ...] = ()
+    """What loading changed in the file as written, for ``assembler inspect``."""
 
     def is_current(self) -> bool:
         """True while none of the files read to make this source has changed on disk."""

@@ -19,24 +19,25 @@ from assembler.cache.inputs import JointEdit, PartInputs
 from assembler.cache.mesh_swap import compile_from_store
 from assembler.documents import LoadedSpec
 from assembler.documents.validation import reading_order
-from assembler.errors import Location, MjcfError, Problem, SpecError
+from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
+from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.joint_rules import JointTable
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
 from assembler.models.spec_names import NameCheck
 from assembler.paths import locate_model_file
 from assembler.schema import PartSpec
+from assembler.urdf import load_urdf, locate_urdf_file
 
 FloatArray = NDArray[np.float64]
 
 COLLISION_GROUP = 0
 VISUAL_GROUP = 1
-MJCF = FieldPath(("mjcf",))
 
 
 class PartModel(metaclass=RegisteringMeta):
@@ -75,10 +76,16 @@ class PartModel(metaclass=RegisteringMeta):
         return Problem(message, cls.locate(path), FieldPath(path) or None)
 
     def _load_source(self) -> MjcfSource:
+        field = FieldPath((self.spec.source_field,))
         try:
-            return load_mjcf(self.spec.mjcf, self.spec.mjcf_fixes)
+            if self.spec.urdf is not None:
+                return load_urdf(self.spec.urdf, self.spec.balance_inertia)
+            return load_mjcf(self.spec.source_file, self.spec.mjcf_fixes)
+        except MissingPackageError as error:
+            located = [Problem(p.message, self.locate(field), field) for p in error.problems]
+            raise MissingPackageError(located, error.package) from None
         except MjcfError as error:
-            located = [Problem(p.message, self.locate(MJCF), MJCF) for p in error.problems]
+            located = [Problem(p.message, self.locate(field), field) for p in error.problems]
             raise type(error)(located) from None
 
     def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
@@ -120,6 +127,11 @@ class PartModel(metaclass=RegisteringMeta):
         """Joint -> attribute -> value and source (the MJCF, a rule, an override, the API)."""
         return self.prepared().joint_values
 
+    @property
+    def actuator_table(self) -> list[ActuatorRecord]:
+        """Every actuator of the part (unprefixed): the file's, then the spec's, with each value's source."""
+        return self.prepared().actuators
+
     def part_mjspec(self) -> mujoco.MjSpec:
         """A fresh copy of the prepared spec, with joint values and collision colours applied."""
         mjspec = self.prepared_mjspec.copy()
@@ -139,15 +151,17 @@ class PartModel(metaclass=RegisteringMeta):
         spec_made = all(
             cls is object or cls.__module__.startswith("assembler.") for cls in type(self).__mro__
         )
-        try:
-            mjcf = str(locate_model_file(self.spec.mjcf))
+        reference = self.spec.source_file
+        locate = locate_urdf_file if self.spec.urdf is not None else locate_model_file
+        try:  # a URDF part's key names its URDF file the way an MJCF part's names its MJCF
+            model_file = str(locate(reference))
         except MjcfError:
-            mjcf = self.spec.mjcf  # the build says what is missing
+            model_file = reference  # the build says what is missing
         return PartInputs(
             family=self.family,
             classes=classes,
             spec_json=json.dumps(self.spec.model_dump(mode="json"), sort_keys=True),
-            mjcf=mjcf,
+            mjcf=model_file,
             idn=repr(self.idn),
             joint_edits=tuple(self.joint_edits),
             spec_made=spec_made,

@@ -2,8 +2,9 @@
 
 Steps, once per part instance: drop the file's keyframes (the assembler writes one merged ``home``
 keyframe), remove the actuation of the joints the spec names (with everything driving or measuring
-them), remove the free joint if asked, add the spec's joints, then resolve every joint parameter
-(MJCF value, spec rule, spec override) with its source.
+them), remove the free joint if asked, add the spec's joints, add the actuators and contact
+exclusions the spec declares, then resolve every joint parameter (MJCF value, spec rule, spec
+override) with its source.
 """
 
 from __future__ import annotations
@@ -14,11 +15,12 @@ import mujoco
 
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
 from assembler.fieldpath import FieldPath
-from assembler.mjcf.added_joints import add_joints
+from assembler.mjcf.added_joints import add_free_joint, add_joints
 from assembler.mjcf.joints import joint_attribute, named_joints
 from assembler.mjcf.removal import remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource
 from assembler.mjcf.structure import root_body_name
+from assembler.models.actuator_table import ActuatorRecord, declare_actuators
 from assembler.models.joint_rules import (
     JointTable,
     JointValue,
@@ -29,13 +31,14 @@ from assembler.models.joint_rules import (
     no_match,
 )
 from assembler.models.provenance import Provenance
+from assembler.models.spec_names import NameCheck
 from assembler.schema import JOINT_RULE_ATTRIBUTES, PartSpec
 
 SETTABLE_JOINT_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
 """Attributes ``set_joint_attribute`` accepts: the ones whose MJCF origin the assembler tracks."""
 
 REMOVE_ACTUATION = FieldPath(("remove_actuation",))
-MJCF = FieldPath(("mjcf",))
+CONTACT_EXCLUDES = FieldPath(("contact_excludes",))
 
 
 @dataclass
@@ -54,6 +57,9 @@ class PreparedPart:
 
     joint_values: JointTable
     """Each joint's frictionloss, damping, armature (and what else the file sets), with sources."""
+
+    actuators: list[ActuatorRecord]
+    """Every actuator of the part: the file's, then those the spec declares, with their values' sources."""
 
 
 def removed_joints(
@@ -82,12 +88,31 @@ def prepared_mjspec(
     remove_joints(mjspec, removed)
     if getattr(spec, "remove_free_joint", False):
         remove_free_joints(mjspec)
+    if getattr(spec, "add_free_joint", False):
+        try:
+            add_free_joint(mjspec)
+        except MjcfError as error:
+            path = FieldPath(("add_free_joint",))
+            raise MjcfError([problem(path, p.message) for p in error.problems]) from None
     try:
         add_joints(mjspec, getattr(spec, "added_joints", []))
     except MjcfError as error:
         path = FieldPath(("added_joints",))
         raise MjcfError([problem(path, p.message) for p in error.problems]) from None
     return mjspec
+
+
+def add_contact_excludes(spec: PartSpec, mjspec: mujoco.MjSpec, problem: SpecProblem) -> list[Problem]:
+    """One ``<exclude>`` per ``contact_excludes`` pair; a problem per missing body (then none is added)."""
+    check = NameCheck(problem, mjspec, [])
+    for index, pair in enumerate(spec.contact_excludes):
+        for side, name in enumerate(pair):
+            check.body(CONTACT_EXCLUDES.child(index).child(side), name)
+    if not check.problems:
+        for first, second in spec.contact_excludes:
+            exclude = mjspec.add_exclude()
+            exclude.bodyname1, exclude.bodyname2 = first, second
+    return check.problems
 
 
 def joint_table(spec: PartSpec, source: MjcfSource, kept: list[str], problem: SpecProblem) -> JointTable:
@@ -124,13 +149,16 @@ def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[P
     try:
         root = root_body_name(source)
     except MjcfError as error:
-        raise MjcfError([problem(MJCF, p.message) for p in error.problems]) from None
+        model_file = FieldPath((spec.source_field,))
+        raise MjcfError([problem(model_file, p.message) for p in error.problems]) from None
     removed, problems = removed_joints(spec, source, problem)
     mjspec = prepared_mjspec(spec, source, removed, problem)
     kept = named_joints(mjspec)
+    actuators, declared = declare_actuators(mjspec, spec.actuators, source.velocity_limits, problem)
+    problems += declared + add_contact_excludes(spec, mjspec, problem)
     try:
         table = joint_table(spec, source, kept, problem)
     except SpecError as error:
         problems += error.problems
         table = {}
-    return PreparedPart(source, mjspec, root, kept, table), problems
+    return PreparedPart(source, mjspec, root, kept, table, actuators), problems

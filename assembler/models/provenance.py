@@ -13,9 +13,9 @@ Origin = Literal["mjcf", "rule", "override", "added", "api"]
 """The MJCF file itself, a spec default rule, a spec ``joints:`` override, a joint the spec adds,
 or a ``set_joint_attribute`` call."""
 
-HowAuthored = Literal["literal", "main default", "class"]
-"""How the MJCF sets a value: on the element, in its main ``<default>``, or through a default class
-(explicit, nested or an ancestor's ``childclass``)."""
+HowAuthored = Literal["literal", "main default", "class", "urdf <dynamics>"]
+"""How the model file sets a value: on the element, in its main ``<default>``, through a default class
+(explicit, nested or an ancestor's ``childclass``), or, for a URDF, in a joint's ``<dynamics>``."""
 
 
 @dataclass(frozen=True)
@@ -44,6 +44,8 @@ class Provenance:
         return self.origin == "mjcf"
 
     def __str__(self) -> str:
+        if self.how == "urdf <dynamics>":
+            return "urdf <dynamics>"
         if self.origin == "mjcf":
             detail = f"class '{self.class_name}'" if self.how == "class" else str(self.how)
             return f"mjcf ({detail})"

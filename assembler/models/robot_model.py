@@ -15,14 +15,14 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
+from assembler.cache.emission import compile_and_emit
 from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.cache.mesh_swap import compile_from_store
-from assembler.cache.service import Assembly, compile_model
+from assembler.cache.service import Assembly, compile_model, compile_xml
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.fieldpath import FieldPath
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
-from assembler.mjcf.emit import to_xml
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
 from assembler.models.bases import RobotBaseModel
@@ -39,9 +39,10 @@ REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
 
 
 def euler_to_quat(rpy: FloatArray) -> FloatArray:
-    """(w, x, y, z) of the rotation Rz(yaw) Ry(pitch) Rx(roll), robosuite's ``set_base_ori`` convention."""
+    """(w, x, y, z) of the rotation Rx(roll) Ry(pitch) Rz(yaw): robosuite's ``set_base_ori`` goes through
+    ``transform_utils.euler2mat``, which builds that product (rotations about the moving x, y', z'')."""
     quat = np.zeros(4)
-    mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "XYZ")
+    mujoco.mju_euler2Quat(quat, np.asarray(rpy, dtype=float), "xyz")
     return quat
 
 
@@ -247,7 +248,7 @@ class RobotModel(PartModel):
             self._apply_placement(self._mjspec)
 
     def set_base_ori(self, rot: FloatArray) -> None:
-        """Orient the robot by (roll, pitch, yaw) in radians, rotating about fixed x, y, z axes."""
+        """Orient the robot by (roll, pitch, yaw) in radians as robosuite does: Rx(roll) Ry(pitch) Rz(yaw)."""
         angles = np.asarray(rot, dtype=float)
         if angles.shape != (3,) or not np.all(np.isfinite(angles)):
             raise AssemblerError(f"set_base_ori: expected 3 finite angles, got {rot!r}")
@@ -318,10 +319,19 @@ class RobotModel(PartModel):
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
 
-    def get_xml(self, cache: bool = True, store: bool = True) -> str:
-        """The assembly as one standalone MJCF document (compiled once first, so it is valid)."""
-        self.get_model(cache=cache, store=store)
-        return to_xml(self.mjspec)
+    def get_xml(self, cache: bool = True, store: bool = True, meshes: bool = True) -> str:
+        """The assembly as one standalone MJCF document (compiled once first, so it is valid); an
+        unchanged robot's XML comes from the compiled-model cache, as its model does. ``meshes``
+        False reads meshes from their files, not the mesh store (see ``compile_xml``)."""
+        if self._mjspec is not None:  # the spec the user may have edited, as it is
+            stored = cache and meshes
+            model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=stored)
+            self._keyframe = Keyframe.of(model)
+            return xml
+        compiled, xml = compile_xml(self.build_inputs(), self._assembly, cache, store, meshes)
+        if compiled is not None:
+            self._keyframe = compiled.keyframe
+        return xml
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
         """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""

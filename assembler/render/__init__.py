@@ -6,7 +6,16 @@ scene (floor, lights) is added to a copy of the robot's MjSpec; the robot itself
 
 from assembler.render.backend import RenderError, choose_backend
 from assembler.render.framing import VIEWS
-from assembler.render.picture import LABELS, render_robot
+from assembler.render.picture import LABELS, Picture, render_robot, take_picture
 from assembler.render.png import encode_png
 
-__all__ = ["LABELS", "VIEWS", "RenderError", "choose_backend", "encode_png", "render_robot"]
+__all__ = [
+    "LABELS",
+    "VIEWS",
+    "Picture",
+    "RenderError",
+    "choose_backend",
+    "encode_png",
+    "render_robot",
+    "take_picture",
+]

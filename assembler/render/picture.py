@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import mujoco
 import numpy as np
@@ -78,14 +79,38 @@ def tile(images: Sequence[Image]) -> Image:
     return sheet
 
 
+@dataclass(frozen=True)
+class Picture:
+    """A rendered picture and which geom groups it shows."""
+
+    image: Image
+    shown: str
+    """e.g. ``geom groups 1, 2``, or ``geom group 0 (collision) for Blocky: it has no visual geoms``."""
+
+
+def take_picture(
+    robot: RobotModel,
+    views: Sequence[str] = ("iso",),
+    width: int = 640,
+    height: int = 480,
+    labels: str | None = None,
+    groups: Sequence[int] | None = None,
+) -> Picture:
+    """The robot in its home pose with a floor and lights, each view auto-framed, tiled into one
+    image; ``groups`` are the geom groups drawn (default: each part's visual geoms, or its collision
+    geoms when it has no visual ones)."""
+    check_views(views)
+    stage = build_stage(robot, width, height, groups)
+    return Picture(tile(render_views(stage, views, width, height, labels)), stage.shown)
+
+
 def render_robot(
     robot: RobotModel,
     views: Sequence[str] = ("iso",),
     width: int = 640,
     height: int = 480,
     labels: str | None = None,
+    groups: Sequence[int] | None = None,
 ) -> Image:
-    """The robot in its home pose with a floor and lights, each view auto-framed, tiled into one image."""
-    check_views(views)
-    stage = build_stage(robot, width, height)
-    return tile(render_views(stage, views, width, height, labels))
+    """:func:`take_picture`'s image."""
+    return take_picture(robot, views, width, height, labels, groups).image

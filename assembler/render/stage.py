@@ -3,11 +3,14 @@
 Only the copy is edited (the robot's own MjSpec is never touched), so this is the one place
 outside ``assembler/mjcf`` that adds elements to an MjSpec: they exist for the picture alone.
 The copy is compiled once with the robot's ``home`` keyframe; the floor is then moved to the
-robot's lowest point in the compiled model, which needs no second compile.
+robot's lowest point in the compiled model, which needs no second compile. Which geoms are drawn
+is decided per part (:mod:`assembler.geom_groups`): its visual geoms, or its collision geoms when
+it has none, unless the user chose the groups; the others are moved to a group that is not drawn.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import mujoco
@@ -15,17 +18,21 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.mesh_swap import compile_from_store
+from assembler.geom_groups import VISUAL_GROUPS, PartGeoms, describe, geoms_by_part
 from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
 from assembler.models import RobotModel
+from assembler.render.backend import RenderError
 
 FLOOR = "render_floor"
 """Name of the floor geom (and of its texture and material)."""
 
 HIDDEN_GROUP = 3
-"""Geom group not drawn by default (mjvOption shows groups 0-2)."""
+"""Geom group not drawn by default (mjvOption shows groups 0-2): where undrawn geoms are moved."""
+
+SHOWN_GROUP = 1
+"""Where the geoms a picture shows are moved (whatever group they were in)."""
 
 DRAWN_GROUPS = (0, 1, 2)
-COLLISION_GROUP, VISUAL_GROUPS = 0, (1, 2)
 
 
 @dataclass(frozen=True)
@@ -36,6 +43,9 @@ class Stage:
     data: mujoco.MjData
     points: NDArray[np.float64]
     """Corners of the bounding box of every drawn robot geom, in world coordinates, shape (n, 3)."""
+
+    shown: str = ""
+    """Which geom groups are drawn, e.g. ``geom groups 1, 2`` (for the ``wrote ...`` line)."""
 
     @property
     def floor(self) -> int:
@@ -72,7 +82,7 @@ def _add_scenery(spec: mujoco.MjSpec) -> None:
     floor = spec.worldbody.add_geom(name=FLOOR, type=mujoco.mjtGeom.mjGEOM_PLANE, material=FLOOR)
     floor.size = [1.0, 1.0, 0.05]  # resized to the robot after compiling
     floor.contype = floor.conaffinity = 0
-    floor.group = VISUAL_GROUPS[-1]  # drawn even when collision geoms are hidden
+    floor.group = DRAWN_GROUPS[-1]  # drawn whatever groups the robot's geoms are shown in
     spec.visual.headlight.ambient = [0.25] * 3
     spec.visual.headlight.diffuse = [0.3] * 3
     for direction, diffuse in (((-0.4, 0.3, -1.0), 0.5), ((0.5, -0.6, -0.6), 0.2)):
@@ -82,11 +92,30 @@ def _add_scenery(spec: mujoco.MjSpec) -> None:
         light.specular = [0.1] * 3
 
 
-def _hide_collision_geoms(model: mujoco.MjModel) -> None:
-    """Hide collision geoms (group 0) as robosuite's renderer does, unless nothing else would be drawn."""
-    collision = model.geom_group == COLLISION_GROUP
-    if np.isin(model.geom_group, VISUAL_GROUPS).any():
-        model.geom_group[collision] = HIDDEN_GROUP
+def _drawn(model: mujoco.MjModel, parts: Sequence[PartGeoms], groups: Sequence[int] | None) -> set[int]:
+    """The geoms to draw: those in ``groups``, else per part what it has (visual, else collision)."""
+    if groups is not None:
+        return {geom for geom in range(model.ngeom) if model.geom_group[geom] in groups}
+    owned = {geom for part in parts for geom in part.geoms}
+    drawn = {geom for part in parts for geom in part.geoms if model.geom_group[geom] in part.seen()}
+    unowned = (geom for geom in range(model.ngeom) if geom not in owned)
+    return drawn | {geom for geom in unowned if model.geom_group[geom] in VISUAL_GROUPS}
+
+
+def _show_only(model: mujoco.MjModel, drawn: set[int], floor: int) -> None:
+    """Move the drawn geoms to a drawn group and the others to a hidden one (this model is the picture's)."""
+    for geom in range(model.ngeom):
+        if geom != floor:
+            model.geom_group[geom] = SHOWN_GROUP if geom in drawn else HIDDEN_GROUP
+
+
+def _nothing_to_draw(robot: RobotModel, parts: Sequence[PartGeoms], shown: str) -> RenderError:
+    groups = sorted({group for part in parts for group in part.groups})
+    having = f"its geoms are in {describe([], groups)}" if groups else "it has no geoms"
+    return RenderError(
+        f"nothing to draw: {type(robot).__name__} has no geom in {shown} ({having}); "
+        "choose the groups to draw with --groups, e.g. --groups 0,1,2"
+    )
 
 
 def drawn_geoms(model: mujoco.MjModel) -> list[int]:
@@ -112,8 +141,9 @@ def box_corners(model: mujoco.MjModel, data: mujoco.MjData, geoms: list[int]) ->
     return np.concatenate(corners) if corners else np.zeros((1, 3))
 
 
-def build_stage(robot: RobotModel, width: int, height: int) -> Stage:
-    """Compile the robot with scenery at its home pose, the floor just under its lowest point."""
+def build_stage(robot: RobotModel, width: int, height: int, groups: Sequence[int] | None = None) -> Stage:
+    """Compile the robot with scenery at its home pose, the floor just under its lowest point, showing
+    the geoms in ``groups`` (default: each part's visual geoms, or its collision geoms if it has none)."""
     spec = robot.mjspec.copy()
     spec.visual.global_.offwidth = max(width, spec.visual.global_.offwidth)
     spec.visual.global_.offheight = max(height, spec.visual.global_.offheight)
@@ -121,16 +151,20 @@ def build_stage(robot: RobotModel, width: int, height: int) -> Stage:
     model = compile_with_home(
         spec, robot.assembly_home(), f"robot '{type(robot).__name__}'", compile_from_store
     )
-    _hide_collision_geoms(model)
+    floor = model.geom(FLOOR).id
+    parts = geoms_by_part(model, (robot, *robot.models))
+    shown = describe(parts, groups)
+    _show_only(model, _drawn(model, parts, groups), floor)
+    if not drawn_geoms(model):  # an empty picture would say nothing, not even why
+        raise _nothing_to_draw(robot, parts, shown)
     data = mujoco.MjData(model)
     mujoco.mj_resetDataKeyframe(model, data, model.key(HOME_KEY).id)
     mujoco.mj_forward(model, data)
     points = box_corners(model, data, drawn_geoms(model))
     low, high = points.min(axis=0), points.max(axis=0)
     reach = float(np.max(high - low)) or 1.0
-    floor = model.geom(FLOOR).id
     model.geom_pos[floor] = [(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, low[2] - 1e-3 * reach]
     model.geom_size[floor, :2] = 3.0 * reach
     model.mat_texrepeat[model.material(FLOOR).id] = 4.0 / reach  # about 8 squares across the robot
     data.geom_xpos[floor] = model.geom_pos[floor]  # mj_forward never recomputes static world geoms
-    return Stage(model=model, data=data, points=points)
+    return Stage(model=model, data=data, points=points, shown=shown)

@@ -1,5 +1,6 @@
 """Pydantic models of every spec format. No MuJoCo and no file I/O here: only shapes and rules."""
 
+from assembler.schema.actuators import ActuatorDeclaration, ActuatorType
 from assembler.schema.base_spec import BaseSpec, BaseType
 from assembler.schema.common import FiniteFloat, StrictModel, Vec3, Vec4
 from assembler.schema.experiment import ExperimentRobot, ExperimentSpec
@@ -24,6 +25,8 @@ __all__ = [
     "JOINT_RULE_ATTRIBUTES",
     "OVERRIDABLE_ATTRIBUTES",
     "SPEC_KINDS",
+    "ActuatorDeclaration",
+    "ActuatorType",
     "Arm",
     "BaseSpec",
     "BaseType",

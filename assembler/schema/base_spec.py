@@ -49,5 +49,9 @@ class BaseSpec(PartSpec):
     remove_free_joint: bool = False
     """Remove the base's free joint (a floating legged base becomes welded)."""
 
+    add_free_joint: bool = False
+    """Give the base's root body a free joint (a URDF cannot declare one): a legged base then moves its
+    robot's root with it, standing on its own feet. The root body must have no joint of its own."""
+
     added_joints: AddedJoints = Field(default_factory=list)
     """Joints added after the removals, e.g. planar mobile joints that make a legged base floating."""

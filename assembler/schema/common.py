@@ -14,6 +14,11 @@ NonNegativeFloat = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
 """A finite number that is zero or larger."""
 
 
+def rule_error(message: str) -> PydanticCustomError:
+    """A model validator's error, shown as written (a plain ValueError gets "Value error, " in front)."""
+    return PydanticCustomError("spec_rule", message)
+
+
 def _ordered(value: tuple[float, float]) -> tuple[float, float]:
     low, high = value
     if not low < high:  # MuJoCo refuses such a range only at compile time, far from the spec line

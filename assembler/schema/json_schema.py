@@ -26,6 +26,9 @@ REFERENCE_FILE = "docs/spec.md"
 ALWAYS_REQUIRED: tuple[str, ...] = ("name", "kind")
 """Fields a spec must write even when it ``extends`` another; the parent supplies the rest."""
 
+MODEL_FILE_FIELDS: tuple[str, ...] = ("mjcf", "urdf")
+"""A part spec gives exactly one of these (unless it ``extends`` another)."""
+
 
 class _FactoryDefaults(GenerateJsonSchema):
     """Shows defaults made by ``default_factory`` too, so editors and the reference show every default."""
@@ -45,6 +48,8 @@ def _inheritable(model_schema: dict[str, Any]) -> None:
     model_schema["if"] = {"required": ["extends"]}
     model_schema["then"] = {"required": [f for f in required if f in ALWAYS_REQUIRED]}
     model_schema["else"] = {"required": required}
+    if all(field in model_schema["properties"] for field in MODEL_FILE_FIELDS):
+        model_schema["else"]["oneOf"] = [{"required": [field]} for field in MODEL_FILE_FIELDS]
 
 
 def spec_json_schema() -> dict[str, object]:

@@ -1,12 +1,13 @@
-"""Fields every part spec shares (robot, base, gripper): identity, MJCF file and joint parameters."""
+"""Fields every part spec shares (robot, base, gripper): identity, MJCF or URDF file, joints, actuators."""
 
 from __future__ import annotations
 
 from typing import Annotated
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from assembler.schema.common import FiniteFloat, StrictModel
+from assembler.schema.actuators import ActuatorDeclaration
+from assembler.schema.common import FiniteFloat, StrictModel, rule_error
 from assembler.schema.fixes import MjcfFix
 from assembler.schema.joints import JointDefaults, JointOverride
 
@@ -31,8 +32,18 @@ class PartSpec(StrictModel):
     description: str = ""
     """One or two sentences for `assembler list` and the generated docs."""
 
-    mjcf: str = Field(min_length=1)
-    """The MJCF file: relative to this spec file, absolute, or 'package://<python package>/<path>'."""
+    mjcf: str | None = Field(default=None, min_length=1)
+    """The MJCF file: relative to this spec file, absolute, or 'package://<python package>/<path>'. Give
+    exactly one of mjcf and urdf."""
+
+    urdf: str | None = Field(default=None, min_length=1)
+    """The URDF file, imported by MuJoCo: relative to this spec file, absolute, or 'package://<package>/<path>'
+    (an installed Python package of that name, else a ROS package: ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or
+    the share/ folders of the Python environment, where example-robot-data installs)."""
+
+    balance_inertia: bool = False
+    """URDF only: make link inertias that violate A + B >= C (a common export error MuJoCo refuses)
+    isotropic at their mean moment, as MuJoCo's balanceinertia does; `assembler inspect` names them."""
 
     mjcf_fixes: list[MjcfFix] = Field(default_factory=list)
     """Declared repairs of an MJCF file we do not own, applied before MuJoCo reads it (each says why)."""
@@ -45,3 +56,33 @@ class PartSpec(StrictModel):
 
     joints: list[JointOverride] = Field(default_factory=list)
     """Per-joint overrides, applied in order after the default rules."""
+
+    actuators: list[ActuatorDeclaration] = Field(default_factory=list)
+    """Actuators to add, one per matched joint; a later entry replaces an earlier one's on the same joint."""
+
+    contact_excludes: list[tuple[str, str]] = Field(default_factory=list)
+    """Pairs of bodies (as named in the file) that never collide, e.g. links whose collision meshes
+    overlap where they meet (MuJoCo's <contact><exclude>)."""
+
+    @model_validator(mode="after")
+    def _one_source_file(self) -> PartSpec:
+        if (self.mjcf is None) == (self.urdf is None):
+            given = "both" if self.mjcf is not None else "neither"
+            raise rule_error(f"give exactly one of mjcf and urdf (the model file), got {given}")
+        if self.urdf is not None and self.mjcf_fixes:
+            raise rule_error("mjcf_fixes repair MJCF files; a spec with urdf cannot use them")
+        if self.mjcf is not None and self.balance_inertia:
+            raise rule_error("balance_inertia applies to URDF files; fix the MJCF's <inertial> instead")
+        if getattr(self, "remove_free_joint", False) and getattr(self, "add_free_joint", False):
+            raise rule_error("give remove_free_joint or add_free_joint, not both")
+        return self
+
+    @property
+    def source_field(self) -> str:
+        """'mjcf' or 'urdf': the field naming this part's model file."""
+        return "urdf" if self.urdf is not None else "mjcf"
+
+    @property
+    def source_file(self) -> str:
+        """The model file reference (resolved by the loader), MJCF or URDF."""
+        return self.urdf if self.urdf is not None else (self.mjcf or "")

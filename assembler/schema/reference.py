@@ -113,6 +113,10 @@ def type_text(schema: Schema) -> str:
 
 
 def _default_text(name: str, field: Schema, model: Schema) -> str:
+    alternatives = [choice["required"][0] for choice in model.get("else", {}).get("oneOf", [])]
+    if name in alternatives:
+        others = " or ".join(f"`{a}`" for a in alternatives if a != name)
+        return f"this or {others} **required** unless `extends`"
     if "default" in field:
         return f"`{_json(field['default'])}`"
     always = model.get("then", {}).get("required", model.get("required", []))

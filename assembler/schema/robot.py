@@ -113,6 +113,10 @@ class RobotSpec(PartSpec):
     remove_free_joint: bool = False
     """Remove the root's free joint, welding the robot to its base or the world."""
 
+    add_free_joint: bool = False
+    """Give the root body a free joint (a URDF cannot declare one): the robot stands on its own feet
+    instead of being welded. The root body must have no joint of its own."""
+
     default_controller_config: dict[str, str] = Field(default_factory=dict)
     """Controller config name per body part (e.g. right: default_panda), for controller libraries."""
 

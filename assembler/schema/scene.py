@@ -30,7 +30,7 @@ class SceneRobot(StrictModel):
     """Where the robot's bottom goes, in the world frame (metres)."""
 
     ori: Vec3 = (0.0, 0.0, 0.0)
-    """Roll, pitch and yaw (radians) about the world's fixed x, y and z axes."""
+    """Roll, pitch and yaw (radians), as robosuite's set_base_ori: the rotation Rx(roll) Ry(pitch) Rz(yaw)."""
 
 
 class SceneSpec(StrictModel):

@@ -34,6 +34,12 @@ MANIFEST = "manifest.jsonl"
 ORPHAN_CHECK_SECONDS = 0.5
 """How often a worker looks whether the process that started it is still there."""
 
+FROM_FILES_AT = 4
+"""Variants per worker from which meshes are read from their files rather than the mesh store:
+MuJoCo's own asset cache keeps meshes read from files processed (hulls, normals, inertia) for the
+process's next compiles, and not those given in memory, so after the first decode each later
+variant compiles in a fraction of the time (Panda: 0.16 s against 0.33 s for compile and XML)."""
+
 
 @dataclass(frozen=True)
 class VariantResult:
@@ -74,18 +80,21 @@ class VariantRun:
         return len({result.sha256 for result in self.written})
 
 
-def variant_xml(plan: VariantPlan, variant: dict[str, Any]) -> str:
-    """The compiled, emitted MJCF of one variant (nothing written)."""
+def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True) -> str:
+    """The compiled, emitted MJCF of one variant (nothing written); ``meshes`` False reads meshes
+    from their files (see :data:`FROM_FILES_AT`)."""
     robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=plan.overrides(variant))
-    return robot.get_xml(cache=plan.cache, store=plan.store)
+    return robot.get_xml(cache=plan.cache, store=plan.store, meshes=meshes)
 
 
-def build_variant(plan: VariantPlan, index: int, variant: dict[str, Any], folder: Path) -> VariantResult:
+def build_variant(
+    plan: VariantPlan, index: int, variant: dict[str, Any], folder: Path, meshes: bool = True
+) -> VariantResult:
     """Assemble, compile and write variant ``index``; problems are returned, not raised."""
     shown = {change.key: change.value for change in plan.overrides(variant)}
     seed = plan.seed if plan.draws else None
     try:
-        xml = variant_xml(plan, variant)  # compiled first: a variant MuJoCo refuses is never written
+        xml = variant_xml(plan, variant, meshes)  # compiled first: a variant MuJoCo refuses is never written
     except AssemblerError as error:
         return VariantResult(index, shown, problems=tuple(str(p) for p in error.problems), seed=seed)
     name = f"{plan.robot}_{index:04d}.xml"
@@ -94,7 +103,10 @@ def build_variant(plan: VariantPlan, index: int, variant: dict[str, Any], folder
     return VariantResult(index, shown, name, hashlib.sha256(data).hexdigest(), seed=seed)
 
 
-def _build(job: tuple[VariantPlan, int, dict[str, Any], Path]) -> VariantResult:
+Job = tuple[VariantPlan, int, dict[str, Any], Path, bool]
+
+
+def _build(job: Job) -> VariantResult:
     return build_variant(*job)
 
 
@@ -111,10 +123,7 @@ def _start_worker(spec_paths: Sequence[str], parent: int) -> None:
         register_specs(path)
 
 
-def _results(
-    plan: VariantPlan, work: list[tuple[VariantPlan, int, dict[str, Any], Path]]
-) -> Iterator[VariantResult]:
-    workers = min(plan.jobs or os.cpu_count() or 1, len(work))
+def _results(plan: VariantPlan, work: list[Job], workers: int) -> Iterator[VariantResult]:
     if workers <= 1:
         yield from map(_build, work)
         return
@@ -139,10 +148,13 @@ def run_variants(plan: VariantPlan, folder: str | Path) -> list[VariantResult]:
     make_folder(target)
     with cannot_write(target / MANIFEST):
         (target / MANIFEST).unlink(missing_ok=True)  # the earlier run's: its files are about to change
-    work = [(plan, index, variant, target) for index, variant in enumerate(plan.variant_overrides())]
+    variants = plan.variant_overrides()
+    workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(variants)))
+    from_store = len(variants) < FROM_FILES_AT * workers
+    work = [(plan, index, variant, target, from_store) for index, variant in enumerate(variants)]
     results: list[VariantResult] = []
     try:
-        for result in _results(plan, work):
+        for result in _results(plan, work, workers):
             results.append(result)
     finally:
         write_manifest(target, results)

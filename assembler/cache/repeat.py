@@ -1,0 +1,79 @@
+"""Answering a repeated request from its record, and recording a request the slow path answered.
+
+:func:`answered_model` and :func:`answered_xml` need nothing but this cache layer and MuJoCo: no
+schema, no spec, no MJCF is read. A request is plain JSON data (what the caller was given, as
+given); its record (:mod:`assembler.cache.requests`) names the model entry, whose own files are
+checked as on every load. :func:`record` is called by the slow path once it has answered.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import mujoco
+
+from assembler.cache.dependencies import Recorder
+from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
+from assembler.cache.service import default_store, load_entry
+from assembler.cache.settings import cache_disabled
+
+Request = Mapping[str, Any]
+"""A request as plain JSON data: what was asked for, exactly as given."""
+
+
+@dataclass(frozen=True)
+class Origin:
+    """A spec file an answer was made from, as it was when it was read."""
+
+    path: str
+    size: int
+    mtime_ns: int
+
+
+def _record_of(request: Request) -> RequestRecord | None:
+    if cache_disabled():
+        return None
+    key = request_key(request)
+    return None if key is None else default_request_store().load(key)
+
+
+def answered_model(request: Request) -> mujoco.MjModel | None:
+    """The compiled model of a request answered before, if nothing it was made from changed."""
+    record = _record_of(request)
+    return None if record is None else load_entry(record.model_key)
+
+
+def answered_xml(request: Request) -> tuple[str, RequestRecord] | None:
+    """The emitted XML of a request answered before, and its record (the notes printed with it
+    then), if nothing it was made from changed and the entry holds its XML."""
+    record = _record_of(request)
+    if record is None:
+        return None
+    xml = default_store().load_xml(record.model_key)
+    return None if xml is None else (xml, record)
+
+
+def record(
+    request: Request,
+    model_key: str,
+    origins: Iterable[Origin],
+    roots: Iterable[Path],
+    notes: Iterable[str] = (),
+    name: str = "",
+) -> bool:
+    """Record that ``request`` is answered by the entry ``model_key``, made from the spec files
+    ``origins`` (a file changed since it was read means no record), with the registry read from the
+    folders below ``roots``; returns whether a record was written."""
+    key = request_key(request)
+    if key is None or cache_disabled():
+        return False
+    read = {origin.path: (origin.size, origin.mtime_ns) for origin in origins}
+    specs = Recorder(read, read).result()
+    if specs is None:
+        return False
+    found = RequestRecord(model_key, tuple(specs), folder_stats(roots), tuple(notes), name)
+    default_request_store().save(key, found)
+    return True

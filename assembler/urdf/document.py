@@ -1,0 +1,232 @@
+"""A URDF file read for MuJoCo: mesh URIs resolved, unreadable meshes converted, traps disarmed.
+
+MuJoCo's URDF reader strips every mesh path to its bare file name (``package://`` URIs included),
+discards visual geoms and fuses bodies without joints into their parents (a fixed base link
+vanishes into the world) unless told otherwise. So before MuJoCo sees the text we:
+
+- replace each mesh ``filename`` by the absolute path of a file it can read (see
+  :mod:`assembler.urdf.packages` and :mod:`assembler.urdf.meshes`), each confined to its home;
+- set ``<mujoco><compiler discardvisual="false" fusestatic="false" strippath="false"/></mujoco>``
+  (MuJoCo's URDF extension element), keeping any other compiler setting the URDF gives;
+- record what MuJoCo does not carry over: joint velocity limits, ``<mimic>`` couplings, which
+  joints declare ``<dynamics>``, and the line of each, for messages.
+"""
+
+from __future__ import annotations
+
+import os
+import xml.etree.ElementTree as ET
+import xml.parsers.expat
+from collections.abc import Collection
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from assembler.errors import MjcfError, Problem
+from assembler.paths import confine, display_path
+from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
+from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
+
+FORCED_COMPILER: dict[str, str] = {"discardvisual": "false", "fusestatic": "false", "strippath": "false"}
+"""Compiler settings MuJoCo's URDF import needs to keep visual geoms, a fixed base link, and paths."""
+
+DIRECTORY_ATTRIBUTES: tuple[str, ...] = ("meshdir", "texturedir", "assetdir")
+
+
+@dataclass(frozen=True)
+class Mimic:
+    """A URDF ``<mimic>``: ``follower = multiplier * leader + offset``."""
+
+    follower: str
+    leader: str
+    multiplier: float
+    offset: float
+    line: int
+
+
+@dataclass
+class UrdfDocument:
+    """The URDF text to hand MuJoCo and what the URDF says that MuJoCo does not keep."""
+
+    path: Path
+    text: str
+    robot_name: str
+    mujoco_element: ET.Element
+    """The ``<mujoco>`` extension element, with the forced compiler settings."""
+    overridden: list[str] = field(default_factory=list)
+    """Compiler settings of the URDF itself that we replaced, as ``name="value"``."""
+    mesh_files: list[Path] = field(default_factory=list)
+    """Every mesh file read (originals, before conversion) and every converted or renamed copy."""
+    renamed: list[Path] = field(default_factory=list)
+    """Copies of mesh files whose stem another mesh file of the URDF has (see assembler.urdf.meshes)."""
+    homes: set[Path] = field(default_factory=set)
+    """Folders the meshes were admitted from (package folders found for package:// URIs)."""
+    velocity_limits: dict[str, float] = field(default_factory=dict)
+    mimics: list[Mimic] = field(default_factory=list)
+    dynamics: dict[str, set[str]] = field(default_factory=dict)
+    """Joint -> the ``<dynamics>`` attributes it sets (damping, friction)."""
+    limited: dict[str, bool] = field(default_factory=dict)
+    """Joint -> whether its ``<limit>`` bounds its position (revolute and prismatic with lower < upper)."""
+    efforts: dict[str, float] = field(default_factory=dict)
+
+
+MESH_PATHS: tuple[str, ...] = ("link/visual/geometry/mesh", "link/collision/geometry/mesh")
+"""Where the meshes MuJoCo reads sit (meshes of ``<gazebo>`` and other tool sections are left alone)."""
+
+
+def _element_lines(data: bytes, paths: Collection[str]) -> dict[str, list[int]]:
+    """The line of every element at one of ``paths`` (below the root), per path, in document order."""
+    lines: dict[str, list[int]] = {path: [] for path in paths}
+    parser = xml.parsers.expat.ParserCreate()
+    stack: list[str] = []
+
+    def start(name: str, _: object) -> None:
+        stack.append(name)
+        here = "/".join(stack[1:])
+        if here in lines:
+            lines[here].append(parser.CurrentLineNumber)
+
+    def end(_: str) -> None:
+        stack.pop()
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.Parse(data, True)
+    return lines
+
+
+def _number(text: str | None, default: float) -> float:
+    try:
+        return float(text) if text is not None else default
+    except ValueError:
+        return default
+
+
+class _Reader:
+    """Collects the problems of one URDF (each mesh file reported once) while rewriting it."""
+
+    def __init__(self, path: Path, homes: Collection[Path], data: bytes) -> None:
+        self.path = path
+        self.shown = display_path(path)
+        self.homes = {path.parent, *homes}
+        self.lines = _element_lines(data, (*MESH_PATHS, "joint"))
+        self.problems: list[Problem] = []
+        self.resolved: dict[str, str] = {}  # filename as written -> file MuJoCo reads
+        self.reported: set[str] = set()
+        self.stems: dict[str, Path] = {}  # MuJoCo names a URDF mesh after its file's stem
+
+    def problem(self, line: int, message: str) -> None:
+        self.problems.append(Problem(f"{self.shown}:{line}: {message}"))
+
+    def mesh_file(self, written: str, line: int, directory: str, document: UrdfDocument) -> str | None:
+        if written in self.resolved:
+            return self.resolved[written]
+        if written in self.reported:
+            return None
+        self.reported.add(written)
+        if split_package_uri(written) is not None:
+            found = find_package_file(written, self.path)
+            if found is None:
+                self.problem(line, f"mesh {not_found_message(written, self.path)}")
+                return None
+            file, home = found
+            document.homes.add(home)
+            homes = [*self.homes, home]
+        else:
+            name = written.removeprefix("file://")
+            file = Path(name) if os.path.isabs(name) else self.path.parent / directory / name
+            homes = list(self.homes)
+            if not file.is_file():
+                self.problem(line, f"mesh file not found: {display_path(file)}")
+                return None
+        try:
+            file = confine(file, homes, f"{self.shown}:{line}: mesh ", MjcfError)
+            readable = readable_mesh(file)
+        except MjcfError as error:
+            self.problems.extend(error.problems)
+            return None
+        except MeshConversionError as error:
+            self.problem(line, str(error))
+            return None
+        if self.stems.setdefault(readable.stem, readable) != readable:
+            readable = renamed_copy(readable)
+            document.renamed.append(readable)
+        document.mesh_files += [file] if readable == file else [file, readable]
+        self.resolved[written] = str(readable)
+        return str(readable)
+
+
+def _joint_facts(root: ET.Element, lines: list[int], document: UrdfDocument) -> None:
+    for joint, line in zip(root.findall("joint"), lines, strict=True):
+        name, kind = joint.get("name", ""), joint.get("type", "")
+        limit = joint.find("limit")
+        if limit is not None:
+            velocity = _number(limit.get("velocity"), 0.0)
+            effort = _number(limit.get("effort"), 0.0)
+            if velocity > 0:
+                document.velocity_limits[name] = velocity
+            if effort > 0:
+                document.efforts[name] = effort
+            lower, upper = _number(limit.get("lower"), 0.0), _number(limit.get("upper"), 0.0)
+            document.limited[name] = kind in ("revolute", "prismatic") and lower < upper
+        dynamics = joint.find("dynamics")
+        if dynamics is not None:
+            document.dynamics[name] = {a for a in ("damping", "friction") if dynamics.get(a) is not None}
+        mimic = joint.find("mimic")
+        if mimic is not None:
+            document.mimics.append(
+                Mimic(
+                    follower=name,
+                    leader=mimic.get("joint", ""),
+                    multiplier=_number(mimic.get("multiplier"), 1.0),
+                    offset=_number(mimic.get("offset"), 0.0),
+                    line=line,
+                )
+            )
+
+
+def _extension(root: ET.Element, document: UrdfDocument) -> tuple[ET.Element, str]:
+    """The ``<mujoco>`` element with the forced compiler settings; returns it and its meshdir."""
+    extension = root.find("mujoco")
+    if extension is None:
+        extension = ET.SubElement(root, "mujoco")
+    compiler = extension.find("compiler")
+    if compiler is None:
+        compiler = ET.SubElement(extension, "compiler")
+    for name, value in FORCED_COMPILER.items():
+        if compiler.get(name) not in (None, value):
+            document.overridden.append(f'{name}="{compiler.get(name)}"')
+        compiler.set(name, value)
+    directory = compiler.get("meshdir", "")
+    for name in DIRECTORY_ATTRIBUTES:
+        compiler.attrib.pop(name, None)  # every mesh path is absolute now
+    return extension, directory
+
+
+def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
+    """The URDF at ``path`` (its bytes ``data``, already checked) made ready for MuJoCo."""
+    shown = display_path(path)
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError as error:
+        raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
+    if root.tag != "robot":
+        raise MjcfError(f"{shown}: not a URDF file: the root element is <{root.tag}>, expected <robot>")
+    document = UrdfDocument(path, "", root.get("name") or path.stem, ET.Element("mujoco"))
+    extension, directory = _extension(root, document)
+    reader = _Reader(path, homes, data)
+    meshes = [
+        (mesh, line)
+        for path in MESH_PATHS
+        for mesh, line in zip(root.findall(path), reader.lines[path], strict=True)
+    ]
+    for mesh, line in sorted(meshes, key=lambda pair: pair[1]):
+        written = mesh.get("filename", "")
+        resolved = reader.mesh_file(written, line, directory, document) if written else None
+        if resolved is not None:
+            mesh.set("filename", resolved)
+    if reader.problems:
+        raise MjcfError(reader.problems)
+    _joint_facts(root, reader.lines["joint"], document)
+    document.mujoco_element = extension
+    document.text = ET.tostring(root, encoding="unicode")
+    return document

@@ -1,0 +1,125 @@
+"""Where a ROS package's files are: ``package://NAME/path`` in URDF mesh URIs and in a spec's ``urdf:``.
+
+ROS resolves ``package://NAME/...`` through its package index; without ROS we look where ROS-style
+packages are installed, in this order (the first folder that holds the file wins):
+
+1. the URDF's own package: the nearest folder above the URDF named ``NAME`` or whose
+   ``package.xml`` declares ``<name>NAME</name>`` (only for URIs inside a URDF);
+2. ``ROS_PACKAGE_PATH``: each entry that is the package itself or holds it as a sub-folder;
+3. ``AMENT_PREFIX_PATH``: ``<prefix>/share/NAME`` of each prefix (ROS 2);
+4. the Python environment's prefixes: ``<sys.prefix>/share/NAME`` (conda, robostack) and
+   ``<site-packages>/cmeel.prefix/share/NAME`` (cmeel wheels such as ``example-robot-data``).
+
+The folder found is the package's home: its files may be read, nothing outside it
+(:func:`assembler.paths.confine`).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sys
+import sysconfig
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from pathlib import Path
+
+from assembler.extras import install_command
+
+PACKAGE_SCHEME = "package://"
+
+ROS_PACKAGE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.\-]*$")
+"""A ROS package name as it may appear in a URI (no path separators, not '.' or '..')."""
+
+INSTALL_EXTRAS: dict[str, str] = {"example-robot-data": "urdf"}
+"""The extra of this project that installs a ROS package a shipped spec reads."""
+
+
+def split_package_uri(uri: str) -> tuple[str, str] | None:
+    """``("NAME", "inner/path")`` of ``package://NAME/inner/path``; None for other text or a bad name."""
+    if not uri.startswith(PACKAGE_SCHEME):
+        return None
+    name, _, inner = uri[len(PACKAGE_SCHEME) :].partition("/")
+    if not ROS_PACKAGE_NAME.match(name) or ".." in name:
+        return None
+    return name, inner
+
+
+def _declares(folder: Path, name: str) -> bool:
+    manifest = folder / "package.xml"
+    if not manifest.is_file():
+        return False
+    try:
+        declared = ET.parse(manifest).getroot().findtext("name")
+    except (ET.ParseError, OSError):
+        return False
+    return (declared or "").strip() == name
+
+
+def own_package(urdf: Path, name: str) -> Path | None:
+    """The nearest folder above ``urdf`` that is package ``name`` (by folder name or package.xml)."""
+    for folder in urdf.parents:
+        if folder.name == name or _declares(folder, name):
+            return folder
+    return None
+
+
+def _environment_prefixes() -> Iterator[Path]:
+    yield Path(sys.prefix)
+    for key in ("purelib", "platlib"):
+        yield Path(sysconfig.get_paths()[key]) / "cmeel.prefix"
+
+
+def _entries(variable: str) -> list[Path]:
+    return [Path(entry) for entry in os.environ.get(variable, "").split(os.pathsep) if entry]
+
+
+def package_folders(name: str, urdf: Path | None = None) -> list[Path]:
+    """Every existing folder of package ``name``, in the order documented above (no duplicates)."""
+    candidates: list[Path] = []
+    if urdf is not None and (own := own_package(urdf, name)) is not None:
+        candidates.append(own)
+    for entry in _entries("ROS_PACKAGE_PATH"):
+        candidates += [entry] if entry.name == name else [entry / name]
+    candidates += [prefix / "share" / name for prefix in _entries("AMENT_PREFIX_PATH")]
+    candidates += [prefix / "share" / name for prefix in _environment_prefixes()]
+    found: list[Path] = []
+    for folder in candidates:
+        if folder.is_dir() and folder.resolve() not in found:
+            found.append(folder.resolve())
+    return found
+
+
+def find_package_file(uri: str, urdf: Path | None = None) -> tuple[Path, Path] | None:
+    """``(file, package folder)`` for a ``package://`` URI, or None when no package folder holds it."""
+    parts = split_package_uri(uri)
+    if parts is None:
+        return None
+    name, inner = parts
+    for folder in package_folders(name, urdf):
+        candidate = folder / inner
+        if candidate.is_file():
+            return candidate, folder
+    return None
+
+
+def not_found_message(uri: str, urdf: Path | None = None) -> str:
+    """Why ``uri`` could not be resolved and what to do, as one line."""
+    parts = split_package_uri(uri)
+    if parts is None:
+        return f"{uri}: expected package://<package>/<path in it>"
+    name, inner = parts
+    folders = package_folders(name, urdf)
+    if folders:
+        return f"{uri}: no file '{inner}' in package '{name}' (looked in {', '.join(map(str, folders))})"
+    extra = INSTALL_EXTRAS.get(name)
+    todo = (
+        f"install it: {install_command(extra)}"
+        if extra
+        else "set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+    )
+    where = "the URDF's own folders, " if urdf is not None else ""
+    return (
+        f"{uri}: package '{name}' not found (searched {where}ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and "
+        f"the share/ folders of this Python environment); {todo}"
+    )

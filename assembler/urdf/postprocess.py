@@ -1,0 +1,163 @@
+"""What a URDF says that MuJoCo's import may lose, written into the imported MjSpec.
+
+- ``<mimic>``: a joint equality ``follower = multiplier * leader + offset`` (MuJoCo's own import
+  drops mimic silently before 4.0 and adds it since; either way the spec ends with exactly one);
+- ``<limit lower upper>``: the joint is limited explicitly, so no ``autolimits`` setting of the
+  assembly it lands in can unlimit it; ``<limit effort>``: its actuator force range;
+- geoms follow robosuite's convention: ``<visual>`` in group 1 without contacts, ``<collision>``
+  in group 0; unnamed geoms are named ``<link>_visual`` / ``<link>_collision`` (``_1``, ``_2``, ...
+  when a link has several) so that lint, important geoms and contact lists can name them;
+- a link welded to the world (a fixed base link) does not collide with its moving children: MuJoCo
+  skips parent-child contacts except with the world, so a kept fixed base link would otherwise
+  touch its first link wherever their meshes meet at the joint (MuJoCo's own import, which fuses
+  the base link into the world, has the same contacts);
+- on request (a spec's ``balance_inertia``), a link inertia that violates A + B >= C is made
+  isotropic at the mean of its moments, as MuJoCo's ``balanceinertia`` does, and named in a note.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Sequence
+
+import mujoco
+import numpy as np
+from numpy.typing import NDArray
+
+from assembler.errors import MjcfError, Problem
+from assembler.urdf.document import Mimic, UrdfDocument
+
+MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
+VISUAL_GROUP = 1
+COLLISION_GROUP = 0
+
+
+def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.MjsEquality | None:
+    for equality in spec.equalities:
+        if equality.type == mujoco.mjtEq.mjEQ_JOINT and (equality.name1, equality.name2) == (
+            follower,
+            leader,
+        ):
+            return equality
+    return None
+
+
+def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None:
+    """One joint equality per ``<mimic>``; a mimic of a joint that cannot move is an error."""
+    problems = []
+    for mimic in mimics:
+        joints = {name: spec.joint(name) for name in (mimic.follower, mimic.leader)}
+        still = [name for name, joint in joints.items() if joint is None or joint.type not in MOVING]
+        if still:
+            problems.append(
+                Problem(
+                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics '{mimic.leader}', but "
+                    f"'{still[0]}' is not a revolute, continuous or prismatic joint; fix the URDF's <mimic>"
+                )
+            )
+            continue
+        equality = _joint_equality(spec, mimic.follower, mimic.leader)
+        if equality is None:
+            equality = spec.add_equality()
+            equality.type = mujoco.mjtEq.mjEQ_JOINT
+            equality.objtype = mujoco.mjtObj.mjOBJ_JOINT
+            equality.name1, equality.name2 = mimic.follower, mimic.leader
+        data = [0.0] * len(equality.data)
+        data[0], data[1] = mimic.offset, mimic.multiplier  # polycoef: q1 = c0 + c1 * q2 + ...
+        equality.data = data
+    if problems:
+        raise MjcfError(problems)
+
+
+def set_limits(spec: mujoco.MjSpec, document: UrdfDocument) -> None:
+    """Position limits and effort limits as explicit ranges, whatever the assembly's autolimits."""
+    true, false = mujoco.mjtLimited.mjLIMITED_TRUE, mujoco.mjtLimited.mjLIMITED_FALSE
+    for joint in spec.joints:
+        if joint.type not in MOVING:
+            continue
+        joint.limited = true if document.limited.get(joint.name, False) else false
+        effort = document.efforts.get(joint.name)
+        if effort is not None:
+            joint.actfrcrange = [-effort, effort]
+            joint.actfrclimited = true
+        else:
+            joint.actfrclimited = false
+
+
+def is_visual(geom: mujoco.MjsGeom) -> bool:
+    """A geom MuJoCo made from a URDF ``<visual>`` (it takes part in no contact)."""
+    return bool(geom.contype == 0 and geom.conaffinity == 0)
+
+
+def robosuite_groups(spec: mujoco.MjSpec) -> None:
+    """Visual geoms in group 1 without contacts, collision geoms in group 0, every geom named."""
+    taken = {geom.name for geom in spec.geoms if geom.name}
+    for body in spec.bodies[1:]:
+        geoms = list(body.geoms)
+        kinds = ["visual" if is_visual(geom) else "collision" for geom in geoms]
+        totals = Counter(kinds)
+        seen: Counter[str] = Counter()
+        for geom, kind in zip(geoms, kinds, strict=True):
+            geom.group = VISUAL_GROUP if kind == "visual" else COLLISION_GROUP
+            if kind == "visual":
+                geom.density = 0.0  # a visual geom adds no mass
+            seen[kind] += 1
+            if geom.name:
+                continue
+            name = f"{body.name}_{kind}" + (f"_{seen[kind]}" if totals[kind] > 1 else "")
+            while name in taken:
+                name += "_"
+            geom.name = name
+            taken.add(name)
+
+
+def _moments(body: mujoco.MjsBody) -> tuple[NDArray[np.float64], bool]:
+    """The body's principal moments of inertia, and whether it gives a full inertia matrix."""
+    full = np.array(body.fullinertia, dtype=float)
+    if np.isnan(full[0]):
+        return np.array(body.inertia, dtype=float), False
+    xx, yy, zz, xy, xz, yz = full
+    matrix = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+    return np.linalg.eigvalsh(matrix), True
+
+
+def balance_inertias(spec: mujoco.MjSpec) -> list[str]:
+    """Make every inertia that violates A + B >= C isotropic at its mean moment; the bodies changed."""
+    changed = []
+    for body in spec.bodies[1:]:
+        if body.mass <= 0:
+            continue
+        moments, full = _moments(body)
+        low, middle, high = np.sort(moments)
+        if low + middle >= high:
+            continue
+        mean = float(np.mean(moments))
+        if full:
+            body.fullinertia = [mean, mean, mean, 0.0, 0.0, 0.0]
+        else:
+            body.inertia = [mean, mean, mean]
+        changed.append(body.name)
+    return changed
+
+
+def _welded_to_world(body: mujoco.MjsBody) -> bool:
+    while body.name != "world":
+        if len(body.joints):
+            return False
+        body = body.parent
+    return True
+
+
+def exclude_welded_parents(spec: mujoco.MjSpec) -> list[tuple[str, str]]:
+    """Exclude contacts between the bodies welded to the world and the moving bodies attached to
+    them (MuJoCo's filterparent, which treats a body and everything welded to it as one, skips the
+    world); returns the pairs."""
+    static = [body for body in spec.bodies[1:] if _welded_to_world(body)]
+    pairs = []
+    for body in spec.bodies[1:]:
+        if len(body.joints) and body.parent.name != "world" and _welded_to_world(body.parent):
+            for other in static:
+                exclude = spec.add_exclude()
+                exclude.bodyname1, exclude.bodyname2 = other.name, body.name
+                pairs.append((other.name, body.name))
+    return pairs

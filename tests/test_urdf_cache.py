@@ -1,0 +1,95 @@
+"""A URDF robot through the compiled-model cache: its key names the URDF file, and every file its
+compile reads (the URDF, its meshes, the OBJ converted from a COLLADA mesh) is a dependency of
+the entry, so an edit or a removed conversion is a miss and never a stale model."""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+import assembler
+from assembler import cache
+from assembler.cache import wait_for_writes
+from assembler.urdf.meshes import converted_dir, converter_available, importable
+from tests.urdf_fixtures import ARM_URDF, write_package, write_stl
+
+SPEC = "name: CachedArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
+
+
+@pytest.fixture(autouse=True)
+def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """A fresh cache folder (and converted-mesh folder below it) per test."""
+    folder = tmp_path / "model-cache"
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    return folder
+
+
+def _backdate(*paths: Path, seconds_ago: float = 3600) -> None:
+    """As if written a while ago: the cache stores no model made from files modified seconds ago
+    (and MuJoCo's own asset cache tells two versions of a file apart by their time in seconds)."""
+    then = time.time() - seconds_ago
+    for path in paths:
+        os.utime(path, (then, then))
+
+
+def _arm(tmp_path: Path, urdf: str) -> Path:
+    package = write_package(tmp_path / "ros", urdf=urdf)
+    folder = package.parent.parent
+    _backdate(package, folder / "meshes" / "cube.stl", folder / "meshes" / "cube.dae")
+    (tmp_path / "arm.yaml").write_text(SPEC)
+    assembler.register_specs(tmp_path / "arm.yaml")
+    return package
+
+
+def _load() -> mujoco.MjModel:
+    model = assembler.create_robot("CachedArm", idn=0).get_model()
+    wait_for_writes()
+    return model
+
+
+def _counted(action: Callable[[], object]) -> tuple[int, int]:
+    """(hits, misses) that ``action`` caused."""
+    before = (cache.counts.hits, cache.counts.misses)
+    action()
+    return cache.counts.hits - before[0], cache.counts.misses - before[1]
+
+
+STL_ONLY = ARM_URDF.replace("cube.dae", "cube.stl")
+"""The test arm with an STL in place of its COLLADA mesh: nothing to convert (no urdf extra needed)."""
+
+
+def test_a_urdf_robot_hits_and_editing_a_mesh_or_the_urdf_is_a_miss(tmp_path: Path) -> None:
+    urdf = _arm(tmp_path, STL_ONLY)
+    assert _counted(_load) == (0, 1)
+    assert _counted(_load) == (1, 0)
+    write_stl(urdf.parent.parent / "meshes" / "cube.stl", edge=0.2)
+    _backdate(urdf.parent.parent / "meshes" / "cube.stl", seconds_ago=1800)
+    assert _counted(_load) == (0, 1)
+    assert np.ptp(_load().mesh_vert, axis=0) == pytest.approx([0.2, 0.2, 0.2])
+    urdf.write_text(STL_ONLY.replace('lower="-1.0" upper="1.0"', 'lower="-0.5" upper="0.5"'))
+    _backdate(urdf, seconds_ago=1800)
+    assert _counted(_load) == (0, 1)
+    assert list(_load().joint("robot0_shoulder").range) == [-0.5, 0.5]
+
+
+@pytest.mark.skipif(
+    not (converter_available() and importable("collada")),
+    reason='converting the COLLADA mesh needs trimesh and pycollada: pip install "robot-assembler[urdf]"',
+)
+def test_a_converted_mesh_is_a_dependency_of_the_entry(tmp_path: Path) -> None:
+    _arm(tmp_path, ARM_URDF)
+    assert _counted(_load) == (0, 1)  # converted just now: too recent to store
+    (converted,) = converted_dir().glob("cube-*.obj")
+    _backdate(converted)
+    assert _counted(_load) == (0, 1)  # stored now
+    assert _counted(_load) == (1, 0)
+    converted.unlink()  # e.g. the cache folder cleaned by hand: the entry's file is gone
+    assert _counted(_load) == (0, 1)
+    assert converted.is_file()  # converted again
