@@ -66,10 +66,11 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
         return self.part.speed
 
     @property
-    def init_qpos(self) -> np.ndarray | None:
-        """The spec's open pose, or None."""
+    def init_qpos(self) -> np.ndarray:
+        """The spec's open pose; without one, every joint at zero (MuJoCo's own ``qpos0`` for joints
+        without a ``ref``), as robosuite's reset writes one value per gripper joint."""
         values = self.part.spec.init_qpos
-        return None if values is None else np.array(values, dtype=float)
+        return np.zeros(len(self.joints)) if values is None else np.array(values, dtype=float)
 
     def format_action(self, action: Sequence[float]) -> np.ndarray:
         """One output in [-1, 1] per actuator; ``current_action`` is the state robosuite resets."""

@@ -17,9 +17,10 @@ import mujoco
 
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
-from assembler.models import ManipulatorModel, PartModel, RobotModel
+from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.files import written_file
+from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.lossless import lossless_xml
 from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
@@ -41,6 +42,8 @@ def robosuite_variant(cls: type[P]) -> type[P]:
             mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
             if isinstance(self, ManipulatorModel):
                 drive_as_declared(self, mjspec)
+            if isinstance(self, GripperModel):
+                add_grip_frames(self, mjspec)
             return mjspec
 
         namespace = {

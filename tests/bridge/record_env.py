@@ -26,7 +26,9 @@ def record(side: str, env_name: str, robots: list[str], steps: int, out: str) ->
     options = {"has_renderer": False, "has_offscreen_renderer": False, "use_camera_obs": False, "seed": 0}
     if env_name.startswith("TwoArm") and len(robots) == 1:
         options["env_configuration"] = "single-robot"
-    env = robosuite.make(env_name, robots=robots if len(robots) > 1 else robots[0], ignore_done=True, **options)
+    env = robosuite.make(
+        env_name, robots=robots if len(robots) > 1 else robots[0], ignore_done=True, **options
+    )
     observations = env.reset()
     mujoco.mj_saveModel(env.sim.model._model, f"{out}.mjb", None)
     rng = np.random.default_rng(1)
@@ -34,7 +36,9 @@ def record(side: str, env_name: str, robots: list[str], steps: int, out: str) ->
     recorded = {f"0/{key}": np.asarray(value, dtype=float) for key, value in observations.items()}
     for step in range(1, steps + 1):
         observations, reward, _, _ = env.step(rng.uniform(low, high))
-        recorded.update({f"{step}/{key}": np.asarray(value, dtype=float) for key, value in observations.items()})
+        recorded.update(
+            {f"{step}/{key}": np.asarray(value, dtype=float) for key, value in observations.items()}
+        )
         recorded[f"{step}/reward"] = np.array(reward, dtype=float)
     np.savez(f"{out}.npz", **recorded)
 

@@ -27,7 +27,13 @@ from tests.parity.robosuite_side import Reference  # noqa: E402
 ROOT = Path(__file__).resolve().parents[2]
 STEPS = 200
 
-ENVIRONMENTS = [("Lift", "Panda"), ("Stack", "Panda"), ("Door", "Panda"), ("Wipe", "Panda"), ("PickPlace", "Panda")]
+ENVIRONMENTS = [
+    ("Lift", "Panda"),
+    ("Stack", "Panda"),
+    ("Door", "Panda"),
+    ("Wipe", "Panda"),
+    ("PickPlace", "Panda"),
+]
 ENVIRONMENTS += [("TwoArmLift", "Panda,Panda"), ("TwoArmHandover", "Panda,Panda")]
 ENVIRONMENTS += [("TwoArmLift", "Baxter"), ("TwoArmHandover", "Baxter")]
 ROBOTS_IN_LIFT = ["IIWA", "Sawyer", "Jaco", "Kinova3", "UR5e", "XArm7", "PandaDexRH", "GR1ArmsOnly"]
@@ -55,7 +61,13 @@ def test_our_specs_make_robosuites_environment(env: str, robots: str, tmp_path: 
     nothing = np.zeros(0)
     found = differences(specs, Reference(stock, nothing, nothing), renamed)
     found = [line for line in found if not line.startswith("keyframe ")]  # environments have none
-    expected = [f"body robot0_manipulator_mount: {'named manipulator_mount in robosuite' if MOUNT_RENAMED.get(robots) else 'not in robosuite'}"] if robots in MOUNT_RENAMED else []
+    expected = (
+        [
+            f"body robot0_manipulator_mount: {'named manipulator_mount in robosuite' if MOUNT_RENAMED.get(robots) else 'not in robosuite'}"
+        ]
+        if robots in MOUNT_RENAMED
+        else []
+    )
     assert found == expected
     assert sorted(spec_steps) == sorted(stock_steps)
     unequal = [key for key in stock_steps if not np.array_equal(spec_steps[key], stock_steps[key])]
