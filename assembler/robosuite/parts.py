@@ -20,8 +20,8 @@ from assembler.fieldpath import FieldPath
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.files import written_file
-from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
+from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.lossless import lossless_xml
 from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
 

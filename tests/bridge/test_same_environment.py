@@ -57,7 +57,7 @@ def _record(side: str, env: str, robots: str, out: Path) -> tuple[mujoco.MjModel
 def test_our_specs_make_robosuites_environment(env: str, robots: str, tmp_path: Path) -> None:
     stock, stock_steps = _record("stock", env, robots, tmp_path / "stock")
     specs, spec_steps = _record("specs", env, robots, tmp_path / "specs")
-    renamed = {f"robot0_manipulator_mount": MOUNT_RENAMED[robots]} if robots in MOUNT_RENAMED else {}
+    renamed = {"robot0_manipulator_mount": MOUNT_RENAMED[robots]} if robots in MOUNT_RENAMED else {}
     nothing = np.zeros(0)
     found = differences(specs, Reference(stock, nothing, nothing), renamed)
     found = [line for line in found if not line.startswith("keyframe ")]  # environments have none
