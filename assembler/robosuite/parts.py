@@ -11,12 +11,14 @@ environment rebuilds every model, and the text of an unchanged part does not cha
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, TypeVar
 
 import mujoco
 
-from assembler.errors import SpecError
+from assembler.errors import AssemblerWarning, SpecError
 from assembler.fieldpath import FieldPath
+from assembler.mjcf.inertia_groups import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.files import written_file
@@ -28,6 +30,9 @@ from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
 P = TypeVar("P", bound=PartModel)
 
 ACTUATION = FieldPath(("robosuite", "actuation"))
+
+ROBOSUITE_INERTIA_GROUPS = (0, 0)
+"""The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias."""
 
 _variants: dict[type[Any], type[Any]] = {}
 _texts: dict[Any, str] = {}
@@ -110,4 +115,20 @@ def part_file(part: PartModel) -> str:
 def assembly_file(robot: RobotModel) -> str:
     """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly)."""
     inputs = robot.build_inputs()
-    return _memo(("assembly", inputs), inputs.cacheable, lambda: lossless_xml(robot.build_mjspec()))
+    return _memo(("assembly", inputs), inputs.cacheable, lambda: lossless_xml(_world_checked(robot)))
+
+
+def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
+    """The robot's assembly, said once where robosuite's world will weigh some body differently."""
+    mjspec = robot.build_mjspec()
+    bodies = weighed_by_other_groups(mjspec, ROBOSUITE_INERTIA_GROUPS)
+    if bodies:
+        shown = ", ".join(bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4 else "")
+        warnings.warn(
+            f"{type(robot).__name__}: robosuite's world counts only group-0 geoms in inferred masses "
+            f'(<compiler inertiagrouprange="0 0">), so {shown} weigh less there than in the assembled '
+            "model; give those bodies an <inertial> to make them agree",
+            AssemblerWarning,
+            stacklevel=2,
+        )
+    return mjspec
