@@ -20,11 +20,24 @@ from pathlib import Path
 import pytest
 import yaml
 
+from assembler.extras import install_command
+
 pytestmark = pytest.mark.wheel
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()
 GIT = ["git", "-c", "user.name=Test", "-c", "user.email=test@example.com", "-c", "init.defaultBranch=main"]
+
+URDF_MISSING = (
+    "    because: package 'example-robot-data' not found (searched ROS_PACKAGE_PATH, AMENT_PREFIX_PATH "
+    f"and the share/ folders of this Python environment); install it: {install_command('urdf')}"
+)
+
+
+def _own_specs(clone: Path) -> list[Path]:
+    """The clone's specs that read no other package's files (not robosuite's, not the URDF ones)."""
+    return [p for p in (clone / "specs").rglob("*.yaml") if not {"robosuite", "urdf"} & set(p.parts)]
+
 
 ROBOSUITE_MISSING = (
     "    because: Python package 'robosuite' is not installed; install it with pip install "
@@ -153,16 +166,20 @@ def test_list_and_build_work_outside_any_checkout(installed: Installed) -> None:
 def test_validate_specs_compile_in_the_clone_counts_what_it_compiled(
     installed: Installed, clone: Path
 ) -> None:
-    own = [p for p in (clone / "specs").rglob("*.yaml") if "robosuite" not in p.parts]
+    own = _own_specs(clone)
     robosuite = list((clone / "specs" / "robosuite").rglob("*.yaml"))
-    compiled, unchecked, because = installed.ok(
-        clone, *_readme_command("assembler validate specs/ --compile")
-    )
+    urdf = list((clone / "specs" / "urdf").rglob("*.yaml"))
+    lines = installed.ok(clone, *_readme_command("assembler validate specs/ --compile"))
+    compiled, *unchecked = lines
     assert compiled.startswith(f"{len(own)} spec(s) validated and compiled: Pedestal, QuadrupedBase, ")
-    assert unchecked.startswith(
+    # one pair of lines per package not installed in the fresh environment: robosuite, the urdf extra
+    reasons = dict(zip(unchecked[1::2], unchecked[::2], strict=True))
+    assert reasons[ROBOSUITE_MISSING].startswith(
         f"{len(robosuite)} spec(s) valid but not checked against their model file nor compiled: "
     )
-    assert because == ROBOSUITE_MISSING
+    assert reasons[URDF_MISSING].startswith(
+        f"{len(urdf)} spec(s) valid but not checked against their model file nor compiled: "
+    )
     assert installed.ok(clone, "assembler", "validate", "scenes/", "experiments/") == [
         "2 scene and experiment file(s) valid: scenes/two_arms.yaml, experiments/soft_pair.yaml"
     ]
@@ -176,7 +193,7 @@ def test_list_in_the_clone_shows_short_paths(installed: Installed, clone: Path) 
 def test_the_spec_format_example_saved_under_specs_validates_and_builds(
     installed: Installed, clone: Path
 ) -> None:
-    (example,) = re.findall(r"```yaml\n(.*?)```", README, flags=re.DOTALL)
+    example = re.findall(r"```yaml\n(.*?)```", README, flags=re.DOTALL)[0]  # the spec format's
     (clone / "specs" / "sparrow7_soft.yaml").write_text(example)
     assert installed.ok(clone, "assembler", "validate", "specs/sparrow7_soft.yaml", "--compile") == [
         "1 spec(s) validated and compiled: Sparrow7Soft"
@@ -192,9 +209,9 @@ def test_adding_a_robot_as_the_readme_says(installed: Installed, clone: Path) ->
     (clone / "assets" / "blocky" / "blocky.xml").write_text(BLOCKY_MJCF)
     (clone / "specs" / "blocky.yaml").write_text("name: Blocky\nmjcf: ../assets/blocky/blocky.xml\n")
     try:
-        compiled, _, _ = installed.ok(clone, "assembler", "validate", "specs/", "--compile")
+        compiled = installed.ok(clone, "assembler", "validate", "specs/", "--compile")[0]
         count, names = compiled.split(" spec(s) validated and compiled: ")
-        own = [p for p in (clone / "specs").rglob("*.yaml") if "robosuite" not in p.parts]
+        own = _own_specs(clone)
         assert int(count) == len(own) and "Blocky" in names.split(", ")
         assert installed.ok(clone, "assembler", "lint", "specs/blocky.yaml") == ["Blocky: no findings"]
     finally:

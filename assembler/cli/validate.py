@@ -1,7 +1,8 @@
 """``assembler validate``: check spec files and folders (schema, names, optionally a compile).
 
-The summary counts what was done to each spec: validated against its MJCF (and compiled, with
-``--compile``), or only validated because the package holding its MJCF is not installed.
+The summary counts what was done to each spec: validated against its model file (and compiled, with
+``--compile``), or only validated because the package holding its model file is not installed (one
+line per missing package, with the specs it leaves unchecked and what to install).
 """
 
 from __future__ import annotations
@@ -21,12 +22,12 @@ def summary(report: ValidationReport, compiled: bool) -> list[str]:
     if checked or not (unchecked or report.placements):
         what = "validated and compiled" if compiled else "valid"
         lines.append(f"{len(checked)} spec(s) {what}: {', '.join(checked)}")
-    if unchecked:
+    for package in report.missing.values():
         lines.append(
-            f"{len(unchecked)} spec(s) valid but not checked against their model file"
-            f"{' nor compiled' if compiled else ''}: {', '.join(report.unchecked)}"
+            f"{len(package.specs)} spec(s) valid but not checked against their model file"
+            f"{' nor compiled' if compiled else ''}: {', '.join(package.specs)}"
         )
-        lines += [f"    because: {package.message}" for package in report.missing.values()]
+        lines.append(f"    because: {package.message}")
     if report.placements:
         files = ", ".join(report.placements)
         lines.append(f"{len(report.placements)} scene and experiment file(s) valid: {files}")
