@@ -119,7 +119,7 @@ class ManipulatorModel(RobotModel):
 
     # ----- groups -------------------------------------------------------------------------
 
-    def _robot_group(self, joint: str) -> str:
+    def group_of(self, joint: str) -> str:
         """torso, head, legs, base, right or left for one of the robot's own joints."""
         declared = self.spec.joint_groups
         if declared is not None:
@@ -135,7 +135,7 @@ class ManipulatorModel(RobotModel):
     def _joint_groups(self) -> dict[str, list[str]]:
         groups: dict[str, list[str]] = {g: [] for g in ("torso", "head", "legs", "base", "right", "left")}
         for joint in self.joint_names:
-            groups.setdefault(self._robot_group(joint), []).append(self.naming_prefix + joint)
+            groups.setdefault(self.group_of(joint), []).append(self.naming_prefix + joint)
         base = self.base
         if base is not None:
             for joint, prefixed in zip(base.joint_names, base.joints, strict=True):

@@ -26,7 +26,7 @@ from assembler.models import REGISTRIES, PartModel
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.registries import family_of as _family_of
-from assembler.robosuite.registries import install, installed, replaced, robosuite_has
+from assembler.robosuite.registries import install, installed, offered, replaced, robosuite_has
 
 __all__ = ["register", "register_experiment", "registered", "replace_robosuite", "replaced"]
 
@@ -38,6 +38,8 @@ def _shipped() -> list[type[PartModel]]:
 
 
 def _enters_robosuite(cls: type[PartModel]) -> bool:
+    if not offered(cls):
+        return False
     try:
         return not robosuite_has(_family_of(cls), cls.__name__)
     except RegistryError:  # robots without arms have no place in robosuite

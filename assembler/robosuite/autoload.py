@@ -22,7 +22,7 @@ from assembler.catalog import register_specs, with_overrides
 from assembler.errors import AssemblerWarning, RegistryError
 from assembler.experiment import build_experiment, read_experiment
 from assembler.models import ManipulatorModel, PartModel
-from assembler.robosuite.registries import install
+from assembler.robosuite.registries import install, offered
 
 SPECS_VARIABLE = "ASSEMBLER_ROBOSUITE_SPECS"
 EXPERIMENT_VARIABLE = "ASSEMBLER_ROBOSUITE_EXPERIMENT"
@@ -32,7 +32,7 @@ def register(*paths: str | Path, replace_robosuite: bool = False) -> list[str]:
     """Register the specs in ``paths`` (files and folders) with the assembler and robosuite: all or
     none. A name robosuite uses itself is an error unless ``replace_robosuite``; returns the names."""
     classes = register_specs(*paths)
-    return install(classes, replace=replace_robosuite)
+    return install([cls for cls in classes if offered(cls)], replace=replace_robosuite)
 
 
 def experiment_robots(path: str | Path) -> list[type[ManipulatorModel]]:

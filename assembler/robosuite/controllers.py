@@ -26,6 +26,7 @@ from robosuite.controllers.composite import composite_controller_factory as fact
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.robosuite.robot_type import base_in_robosuite
 
 CONTROLLER = FieldPath(("robosuite", "controller"))
 
@@ -101,7 +102,8 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
                 )
             ) from None
     if declared.endswith(".json"):
-        folder = robot_class.loaded.source.path.parent if robot_class.loaded is not None else Path.cwd()
+        document = robot_class.loaded.document if robot_class.loaded is not None else None
+        folder = document.folder if document is not None and document.folder is not None else Path.cwd()
         path = folder / declared
         try:
             return flattened(json.loads(path.read_text()))
@@ -134,7 +136,7 @@ def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
     the base robosuite stands it on (its default base, or its stand-in base)."""
     robot = robot_class(idn=0)
     spec = robot_class.spec
-    robot.add_base(REGISTERED_BASES.lookup(spec.default_base or spec.robosuite.stand_in_base)(idn=0))
+    robot.add_base(REGISTERED_BASES.lookup(base_in_robosuite(spec))(idn=0))
     config = flattened(_robosuite_file(DEFAULT_BY_ARMS[robot.arm_type]))
     actuated = {
         "base": robot.base_actuators,
@@ -179,7 +181,8 @@ class ControllerConfigs:
         robosuite's)."""
         for module in BINDINGS:
             if module in sys.modules:
-                sys.modules[module].load_composite_controller_config = self.load
+                # setattr: the loader is a module attribute robosuite's stubs do not declare
+                setattr(sys.modules[module], "load_composite_controller_config", self.load)  # noqa: B010
 
 
 CONFIGS = ControllerConfigs()

@@ -20,6 +20,7 @@ from robosuite.models.grippers import GripperModel as RobosuiteGripper
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import GripperModel, PartModel, RobotBaseModel
+from assembler.models.part import FloatArray
 from assembler.robosuite.parts import part_file, robosuite_variant
 
 BASE_CLASSES: dict[str, type] = {
@@ -40,6 +41,9 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
 
     assembler_class: ClassVar[type[GripperModel] | None] = None
     """The assembler's class for the spec."""
+
+    current_action: FloatArray
+    """The gripper's last outputs (robosuite's state, zeroed at each reset)."""
 
     def __init__(self, idn: int | str = 0) -> None:
         assert self.assembler_class is not None, "made per spec by robosuite_class_of"
@@ -66,17 +70,17 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
         return self.part.speed
 
     @property
-    def init_qpos(self) -> np.ndarray:
+    def init_qpos(self) -> FloatArray:
         """The spec's open pose; without one, every joint at zero (MuJoCo's own ``qpos0`` for joints
         without a ``ref``), as robosuite's reset writes one value per gripper joint."""
         values = self.part.spec.init_qpos
         return np.zeros(len(self.joints)) if values is None else np.array(values, dtype=float)
 
-    def format_action(self, action: Sequence[float]) -> np.ndarray:
+    def format_action(self, action: Sequence[float]) -> FloatArray:
         """One output in [-1, 1] per actuator; ``current_action`` is the state robosuite resets."""
         if self.part.action_map is None:
             return np.asarray(action, dtype=float)  # no actuators: robosuite's null gripper
-        self.part.current_action = np.asarray(self.current_action, dtype=float)
+        self.part.current_action = np.asarray(self.current_action, dtype=np.float64)
         outputs = self.part.format_action(action)
         self.current_action = self.part.current_action
         return outputs
@@ -91,7 +95,7 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
 
     @property
     def _important_sensors(self) -> dict[str, str]:
-        return dict(self.part.spec.important_sensors)
+        return {**super()._important_sensors, **self.part.spec.important_sensors}
 
 
 class SpecBase:
@@ -107,12 +111,12 @@ class SpecBase:
         super().__init__(part_file(self.part), idn=idn)  # type: ignore[call-arg]
 
     @property
-    def top_offset(self) -> np.ndarray:
+    def top_offset(self) -> FloatArray:
         """Offset from the base's root to the surface the robot stands on."""
         return self.part.top_offset
 
     @property
-    def bottom_offset(self) -> np.ndarray:
+    def bottom_offset(self) -> FloatArray:
         """Offset from the base's root to its bottom."""
         return self.part.bottom_offset
 
@@ -122,7 +126,7 @@ class SpecBase:
         return self.part.horizontal_radius
 
     @property
-    def init_qpos(self) -> np.ndarray:
+    def init_qpos(self) -> FloatArray:
         """The legs' initial positions (robosuite's LeggedRobot reads them from a legged base)."""
         return np.array(self.part.spec.init_qpos or [], dtype=float)
 

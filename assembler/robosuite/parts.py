@@ -21,6 +21,7 @@ from assembler.fieldpath import FieldPath
 from assembler.mjcf.inertia_groups import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
+from assembler.robosuite.arm_centers import add_arm_centers
 from assembler.robosuite.files import written_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
@@ -30,6 +31,7 @@ from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
 P = TypeVar("P", bound=PartModel)
 
 ACTUATION = FieldPath(("robosuite", "actuation"))
+JOINT_GROUPS = FieldPath(("joint_groups",))
 
 ROBOSUITE_INERTIA_GROUPS = (0, 0)
 """The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias."""
@@ -47,6 +49,7 @@ def robosuite_variant(cls: type[P]) -> type[P]:
             mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
             if isinstance(self, ManipulatorModel):
                 drive_as_declared(self, mjspec)
+                add_arm_centers(self, mjspec)
             if isinstance(self, GripperModel):
                 add_grip_frames(self, mjspec)
             return mjspec
@@ -59,11 +62,21 @@ def robosuite_variant(cls: type[P]) -> type[P]:
         }
         variant = type(cls.__name__, (cls,), namespace)
         _variants[cls] = variant
-    return variant  # type: ignore[return-value]
+    return variant
 
 
 def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
     """Apply the spec's ``robosuite.actuation`` to ``mjspec``, the robot's part spec (unprefixed)."""
+    undriven = undriven_joints(robot, mjspec)
+    if undriven:
+        raise SpecError(
+            robot.spec_problem(
+                JOINT_GROUPS,
+                f"robosuite's controllers drive each joint of the groups they control with one actuator, "
+                f"but {', '.join(undriven)} have none (a mimic follower?): declare an actuator for each, "
+                "or set robosuite.register: false for a robot robosuite cannot drive",
+            )
+        )
     servos = position_servos(mjspec, driven_actuators(robot))
     choice = robot.spec.robosuite.actuation
     names = ", ".join(servo.name for servo in servos)
@@ -87,6 +100,14 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 )
             )
         motorize(servos)
+
+
+def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
+    """The robot's own joints (unprefixed) in groups robosuite's controllers drive that no actuator of
+    ``mjspec`` (the robot's part spec) drives."""
+    targets = {actuator.target for actuator in mjspec.actuators}
+    driven = DRIVEN_GROUPS[robot_type_name(type(robot))]
+    return [j for j in robot.joint_names if robot.group_of(j) in driven and j not in targets]
 
 
 def driven_actuators(robot: ManipulatorModel) -> set[str]:

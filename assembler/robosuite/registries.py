@@ -58,6 +58,12 @@ def family_of(spec_class: type[PartModel]) -> str:
     raise RegistryError(f"{spec_class.__name__}: robosuite takes robots with arms, grippers and bases only")
 
 
+def offered(spec_class: type[PartModel]) -> bool:
+    """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
+    ``robosuite.register: false``."""
+    return not issubclass(spec_class, ManipulatorModel) or spec_class.spec.robosuite.register
+
+
 def registered_class(family: str, name: str) -> type | None:
     """The class robosuite's table holds for ``name`` (robosuite keeps its null gripper under None)."""
     table = TABLES[family][0]
@@ -106,7 +112,8 @@ def install(
     if problems:
         raise RegistryError(problems)
     made = [
-        (cls, robot_class(cls) if family_of(cls) == "robot" else robosuite_class_of(cls)) for cls in classes
+        (cls, robot_class(cls) if issubclass(cls, ManipulatorModel) else robosuite_class_of(cls))
+        for cls in classes
     ]
     replacing = [cls.__name__ for cls in classes if robosuite_has(family_of(cls), cls.__name__)]
     for cls, robosuite_cls in made:
@@ -127,14 +134,14 @@ def _write(spec_class: type[PartModel], robosuite_cls: type) -> None:
         table[name] = robosuite_cls
     if robosuites_own:
         setattr(module, name, robosuite_cls)  # robosuite's tests import classes by module attribute
-    if family == "robot":
+    if issubclass(spec_class, ManipulatorModel):
         if robosuites_own:
             CONFIGS.robosuites_own.add(name)
         else:
             ROBOT_CLASS_MAPPING.setdefault(
                 name, getattr(robosuite_robot_types, robot_type_name(spec_class))
             )  # robosuite's names keep theirs
-        CONFIGS.robots[name] = spec_class  # type: ignore[assignment]
+        CONFIGS.robots[name] = spec_class
 
 
 def replaced() -> list[str]:

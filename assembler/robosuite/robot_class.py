@@ -11,7 +11,7 @@ and every name in them exists in that assembly.
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any, ClassVar, TypeVar
 
 import numpy as np
 from robosuite.models.base import MujocoXML
@@ -23,15 +23,17 @@ from robosuite.models.robots.robot_model import RobotModelMeta
 from assembler.errors import AssemblerError, SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
+from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
 from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
+from assembler.robosuite.robot_type import base_in_robosuite
 from assembler.robosuite.same_names import check_same_names
-from assembler.schema.expressions import ExpressionError
+from assembler.schema.expressions import ExpressionError, evaluate_expression
 
-FloatArray = np.ndarray
+P = TypeVar("P", bound=PartModel)
 
 
-class QuietMeta(RobotModelMeta):
+class QuietMeta(RobotModelMeta):  # type: ignore[misc]
     """robosuite's robot metaclass, except for our classes: robosuite's registers every class it makes
     by name at once, silently replacing another of that name; ours are registered by
     :mod:`assembler.robosuite.registries`, which refuses conflicts. Classes others derive from ours
@@ -51,6 +53,9 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
 
     arms: ClassVar[list[str]] = []
     """The arms, right first (robosuite reads them from the class)."""
+
+    base: Any
+    """robosuite's base object the robot stands on (None until ``add_base``)."""
 
     def __init__(self, idn: int | str = 0) -> None:
         if self.assembler_class is None:
@@ -78,7 +83,7 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     @property
     def default_base(self) -> str:
         """The spec's base, or its ``robosuite.stand_in_base`` (robosuite cannot build a robot without)."""
-        return str(self.spec.default_base or self.spec.robosuite.stand_in_base)
+        return str(base_in_robosuite(self.spec))
 
     @property
     def default_gripper(self) -> dict[str, str | None]:
@@ -111,7 +116,8 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     def base_xpos_offset(self) -> dict[str, Any]:
         """Per arena, robosuite's shapes: ``["table"]`` a function of the table length (positional),
         every other arena three numbers."""
-        return {arena: offset_for_robosuite(self.spec, arena) for arena in self.spec.base_xpos_offset}
+        offsets = {**DEFAULT_BASE_XPOS_OFFSET, **self.spec.base_xpos_offset}
+        return {arena: offset_for_robosuite(arena, offset) for arena, offset in offsets.items()}
 
     @property
     def top_offset(self) -> FloatArray:
@@ -189,14 +195,29 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
 
 
-def offset_for_robosuite(spec: Any, arena: str) -> Any:
-    """The spec's base offset for ``arena`` in the shape robosuite reads."""
+DEFAULT_BASE_XPOS_OFFSET: dict[str, tuple[float | str, float | str, float | str]] = {
+    "bins": (-0.5, -0.1, 0.0),
+    "empty": (-0.6, 0.0, 0.0),
+    "table": ("-0.16 - table_length / 2", 0.0, 0.0),
+}
+"""robosuite's Panda's placement per arena, which a spec robot takes for every arena its
+``base_xpos_offset`` leaves out (robosuite's environments read all three; docs/robosuite.md)."""
+
+
+def offset_for_robosuite(arena: str, offset: tuple[float | str, float | str, float | str]) -> Any:
+    """A base offset in the shape robosuite reads: for ``table`` a function of the table length
+    (robosuite passes it positionally), for other arenas three numbers."""
+
+    def evaluated(**variables: float) -> tuple[float, float, float]:
+        x, y, z = (evaluate_expression(value, variables) for value in offset)
+        return (x, y, z)
+
     if arena == "table":
-        return lambda table_length: spec.resolve_base_xpos_offset("table", table_length=table_length)
-    return spec.resolve_base_xpos_offset(arena)
+        return lambda table_length: evaluated(table_length=table_length)
+    return evaluated()
 
 
-def our_part(registry: Registry[Any], robosuite_part: Any) -> type[PartModel]:
+def our_part(registry: Registry[P], robosuite_part: Any) -> type[P]:
     """The robosuite variant of our class for ``robosuite_part`` (a robosuite gripper or base object):
     its own spec class when it is one of ours, else our spec of the same name, whose names must be
     robosuite's."""
@@ -232,7 +253,7 @@ def robot_class(assembler_class: type[ManipulatorModel]) -> type[SpecRobot]:
         "__module__": __name__,
         "__doc__": f"{spec.name} from its spec, for robosuite's environments.",
     }
-    return QuietMeta(spec.name, (SpecRobot,), namespace)  # type: ignore[return-value]
+    return QuietMeta(spec.name, (SpecRobot,), namespace)
 
 
 def _three_numbers(spec: Any, arena: str) -> bool:

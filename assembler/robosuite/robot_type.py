@@ -10,6 +10,7 @@ it follows the base robosuite stands the robot on and the robot's morphology.
 from __future__ import annotations
 
 from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.schema import RobotSpec
 
 BY_BASE_TYPE: dict[str, str] = {
     "mount": "FixedBaseRobot",
@@ -29,6 +30,16 @@ DRIVEN_GROUPS: dict[str, tuple[str, ...]] = {
 velocities)."""
 
 
+def base_in_robosuite(spec: RobotSpec) -> str:
+    """The base a spec robot stands on in robosuite: its default base, else its stand-in (declared, or
+    by morphology: see ``RobosuiteOptions.stand_in_base``)."""
+    if spec.default_base is not None:
+        return spec.default_base
+    if spec.robosuite.stand_in_base is not None:
+        return spec.robosuite.stand_in_base
+    return "NoActuationBase" if spec.morphology in LEGGED_MORPHOLOGIES else "NullMount"
+
+
 def robot_type_name(robot_class: type[ManipulatorModel]) -> str:
     """The name of robosuite's Robot class for ``robot_class`` (declared, or by base and morphology)."""
     spec = robot_class.spec
@@ -36,5 +47,5 @@ def robot_type_name(robot_class: type[ManipulatorModel]) -> str:
         return str(spec.robosuite.robot_type)
     if spec.morphology in LEGGED_MORPHOLOGIES:
         return "LeggedRobot"
-    base = REGISTERED_BASES.get(spec.default_base or spec.robosuite.stand_in_base)
+    base = REGISTERED_BASES.get(base_in_robosuite(spec))
     return BY_BASE_TYPE[base.spec.type] if base is not None else "FixedBaseRobot"

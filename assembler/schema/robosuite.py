@@ -19,6 +19,10 @@ Actuation = Literal["torque", "as_is"]
 class RobosuiteOptions(StrictModel):
     """What robosuite needs of a robot beyond its model; null fields take their default."""
 
+    register: bool = True
+    """Whether ``import assembler.robosuite`` (or ``register`` of its folder) offers the robot to robosuite;
+    false for a robot robosuite's controllers cannot drive (say why beside it)."""
+
     controller: str | dict[str, Any] | None = None
     """The composite controller configuration: one of robosuite's by name (e.g. default_panda, BASIC) or the
     configuration itself (body_parts, ...; joint and site names without the robot's prefix); null: robosuite's
@@ -40,6 +44,7 @@ class RobosuiteOptions(StrictModel):
     init_base_qpos: list[FiniteFloat] | None = None
     """Base joint positions robosuite sets at each reset (robosuite's init_base_qpos), or null."""
 
-    stand_in_base: Name = "NullMount"
-    """The base used in robosuite when the spec's default_base is null: robosuite cannot build a robot
-    without one."""
+    stand_in_base: Name | None = None
+    """The base used in robosuite when the spec's default_base is null (robosuite cannot build a robot
+    without one); null: NoActuationBase for humanoids and legged manipulators (robosuite's GR1 stands
+    on it, and their robot class reads its center site), NullMount for other robots."""
