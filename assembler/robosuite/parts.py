@@ -74,7 +74,7 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 JOINT_GROUPS,
                 f"robosuite's controllers drive each joint of the groups they control with one actuator, "
                 f"but {', '.join(undriven)} have none (a mimic follower?): declare an actuator for each, "
-                "or set robosuite.register: false for a robot robosuite cannot drive",
+                "or set robosuite.enabled: false for a robot robosuite cannot drive",
             )
         )
     servos = position_servos(mjspec, driven_actuators(robot))

@@ -60,8 +60,8 @@ def family_of(spec_class: type[PartModel]) -> str:
 
 def offered(spec_class: type[PartModel]) -> bool:
     """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
-    ``robosuite.register: false``."""
-    return not issubclass(spec_class, ManipulatorModel) or spec_class.spec.robosuite.register
+    ``robosuite.enabled: false``."""
+    return not issubclass(spec_class, ManipulatorModel) or spec_class.spec.robosuite.enabled
 
 
 def registered_class(family: str, name: str) -> type | None:

@@ -19,7 +19,7 @@ Actuation = Literal["torque", "as_is"]
 class RobosuiteOptions(StrictModel):
     """What robosuite needs of a robot beyond its model; null fields take their default."""
 
-    register: bool = True
+    enabled: bool = True
     """Whether ``import assembler.robosuite`` (or ``register`` of its folder) offers the robot to robosuite;
     false for a robot robosuite's controllers cannot drive (say why beside it)."""
 
