@@ -19,6 +19,7 @@ from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
+from assembler.robosuite.center_sites import add_center_sites
 from assembler.robosuite.files import written_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
@@ -42,6 +43,7 @@ def robosuite_variant(cls: type[P]) -> type[P]:
             mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
             if isinstance(self, ManipulatorModel):
                 drive_as_declared(self, mjspec)
+                add_center_sites(self, mjspec)
             if isinstance(self, GripperModel):
                 add_grip_frames(self, mjspec)
             return mjspec

@@ -25,10 +25,12 @@ from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
 from assembler.models.registering import Registry
 from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
+from assembler.robosuite.placement import offsets
 from assembler.robosuite.same_names import check_same_names
 from assembler.schema.expressions import ExpressionError
 
 FloatArray = np.ndarray
+JOINT_GROUPS = FieldPath(("joint_groups",))
 
 
 class QuietMeta(RobotModelMeta):
@@ -110,8 +112,9 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     @property
     def base_xpos_offset(self) -> dict[str, Any]:
         """Per arena, robosuite's shapes: ``["table"]`` a function of the table length (positional),
-        every other arena three numbers."""
-        return {arena: offset_for_robosuite(self.spec, arena) for arena in self.spec.base_xpos_offset}
+        every other arena three numbers; arenas the spec leaves out get robosuite's defaults
+        (:mod:`assembler.robosuite.placement`)."""
+        return offsets(self.spec)
 
     @property
     def top_offset(self) -> FloatArray:
@@ -166,6 +169,7 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     def update_actuators(self) -> None:
         """robosuite's actuator groups: each actuator with the joint it drives."""
         self._arms_actuators = list(self.assembly.arm_actuators)
+        check_one_actuator_per_arm_joint(self.assembly)
         self._base_actuators = self.assembly.base_actuators
         self._torso_actuators = self.assembly.torso_actuators
         self._head_actuators = self.assembly.head_actuators
@@ -189,11 +193,22 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
 
 
-def offset_for_robosuite(spec: Any, arena: str) -> Any:
-    """The spec's base offset for ``arena`` in the shape robosuite reads."""
-    if arena == "table":
-        return lambda table_length: spec.resolve_base_xpos_offset("table", table_length=table_length)
-    return spec.resolve_base_xpos_offset(arena)
+def check_one_actuator_per_arm_joint(robot: ManipulatorModel) -> None:
+    """robosuite's arm controllers compute one torque per arm joint and clip it by the arm's actuators,
+    in order: an arm joint without an actuator of its own (a URDF ``<mimic>`` follower) fails there with
+    a numpy broadcast error at the first step; say so before, at the spec's ``joint_groups``."""
+    problems = []
+    for arm in robot.arms:
+        joints, actuators = robot.arm_joints[arm], robot.arm_actuators[arm]
+        if len(joints) != len(actuators):
+            message = (
+                f"robosuite's arm controllers drive one actuator per arm joint, but arm {arm} has "
+                f"{len(joints)} joints and {len(actuators)} actuators; leave joints without an actuator of "
+                "their own (e.g. a <mimic> finger) out of the arm's joint group, or make the hand a gripper"
+            )
+            problems.append(robot.spec_problem(JOINT_GROUPS, message))
+    if problems:
+        raise SpecError(problems)
 
 
 def our_part(registry: Registry[Any], robosuite_part: Any) -> type[PartModel]:
