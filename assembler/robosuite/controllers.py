@@ -26,6 +26,7 @@ from robosuite.controllers.composite import composite_controller_factory as fact
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
 
 CONTROLLER = FieldPath(("robosuite", "controller"))
 
@@ -50,6 +51,9 @@ BINDINGS: tuple[str, ...] = (
     "robosuite",
 )
 """The modules that hold ``load_composite_controller_config`` under that name."""
+
+BASE_DRIVEN_BY: dict[str, set[str]] = {"WheeledRobot": {"base"}, "LeggedRobot": {"base"}}
+"""The robot classes of robosuite that drive a base (with velocities, so not in ``DRIVEN_GROUPS``)."""
 
 Loader = Callable[..., dict[str, Any]]
 ROBOSUITES_LOADER: Loader = factory.load_composite_controller_config
@@ -101,7 +105,8 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
                 )
             ) from None
     if declared.endswith(".json"):
-        folder = robot_class.loaded.source.path.parent if robot_class.loaded is not None else Path.cwd()
+        written = robot_class.loaded.document.path if robot_class.loaded is not None else None
+        folder = Path(written).parent if written is not None else Path.cwd()  # relative to the spec file
         path = folder / declared
         try:
             return flattened(json.loads(path.read_text()))
@@ -131,7 +136,11 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
 
 def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
     """robosuite's configuration for the robot's arms, plus the other parts it has actuators for on
-    the base robosuite stands it on (its default base, or its stand-in base)."""
+    the base robosuite stands it on (its default base, or its stand-in base) that its robosuite Robot
+    class drives: a FixedBaseRobot drives arms only, and a composite controller for parts nobody
+    drives would add action dimensions that do nothing (HYBRID_MOBILE_BASE's base-mode flag)."""
+    robot_type = robot_type_name(robot_class)
+    driven = set(DRIVEN_GROUPS[robot_type]) | BASE_DRIVEN_BY.get(robot_type, set())
     robot = robot_class(idn=0)
     spec = robot_class.spec
     robot.add_base(REGISTERED_BASES.lookup(spec.default_base or spec.robosuite.stand_in_base)(idn=0))
@@ -143,7 +152,8 @@ def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
         "legs": robot.legs_actuators,
     }
     for part, actuators in actuated.items():
-        if actuators:
+        actuated[part] = actuators if part in driven else []
+        if actuated[part]:
             config["body_parts"][part] = copy.deepcopy(
                 flattened(_robosuite_file(EXTRA_PARTS_FROM[part]))["body_parts"][part]
             )
