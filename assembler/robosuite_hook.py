@@ -22,11 +22,12 @@ VARIABLES: tuple[str, ...] = ("ASSEMBLER_ROBOSUITE_SPECS", "ASSEMBLER_ROBOSUITE_
 """The hook does anything only when one of these is set."""
 
 PTH_LINE = (
-    "import os, sys; "
+    "import os, sys; ("
     + " or ".join(f"os.environ.get('{name}')" for name in VARIABLES)
-    + " and __import__('assembler.robosuite_hook')\n"
+    + ") and __import__('assembler.robosuite_hook')\n"
 )
-"""The line of the ``.pth`` file (site runs lines that start with ``import``)."""
+"""The line of the ``.pth`` file (site runs lines that start with ``import``); the parentheses matter:
+``a or b and c`` is ``a or (b and c)``, which never imports the hook when the first variable is set."""
 
 
 class AfterRobosuite(importlib.abc.MetaPathFinder):

@@ -21,12 +21,12 @@ except ImportError as error:  # pragma: no cover - depends on the installation
         f"assembler.robosuite needs robosuite ({error}); install it with: pip install -e '.[robosuite]'"
     ) from None
 
-from assembler.errors import RegistryError
+from assembler.errors import Problem, RegistryError, did_you_mean
 from assembler.models import REGISTRIES, PartModel
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
+from assembler.robosuite.registries import TABLES, install, installed, offered, replaced, robosuite_has
 from assembler.robosuite.registries import family_of as _family_of
-from assembler.robosuite.registries import install, installed, offered, replaced, robosuite_has
 
 __all__ = ["register", "register_experiment", "registered", "replace_robosuite", "replaced"]
 
@@ -57,10 +57,24 @@ def replace_robosuite(names: list[str] | None = None) -> list[str]:
     ]
     unknown = sorted(set(names or []) - {cls.__name__ for cls in classes})
     if unknown:
-        raise RegistryError(
-            f"no spec replaces robosuite's {', '.join(unknown)}: neither robosuite nor the specs know it"
-        )
+        raise RegistryError([Problem(_why_not_replaced(name)) for name in unknown])
     return install(classes, replace=True)
+
+
+def _why_not_replaced(name: str) -> str:
+    """Why ``replace_robosuite`` cannot replace ``name``: not robosuite's, or no spec of that name."""
+    specs = {spec_name for table in REGISTRIES.values() for spec_name in table}
+    robosuites = {
+        str(other) for family in TABLES for other in TABLES[family][0] if robosuite_has(family, str(other))
+    }
+    if name in specs:
+        return (
+            f"replace_robosuite: {name} is not robosuite's; robosuite finds our {name} by that name already"
+        )
+    if name in robosuites:
+        return f"replace_robosuite: robosuite's {name} has no spec of that name to replace it"
+    hint = did_you_mean(name, specs & robosuites)
+    return f"replace_robosuite: neither robosuite nor the specs know {name}.{hint}"
 
 
 def registered() -> dict[str, list[str]]:

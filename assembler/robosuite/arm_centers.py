@@ -35,7 +35,8 @@ def add_arm_centers(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
         mount.add_site(name=name, size=[0.01, 0.01, 0.01], rgba=[1, 0.3, 0.3, 1], group=2)
     if missing:
         warnings.warn(
-            f"{robot.spec.name}: robosuite's arm controllers read the site(s) {', '.join(missing)}, which "
+            f"{robot.spec.name}: robosuite's arm controllers read the site{'s' if len(missing) > 1 else ''} "
+            f"{', '.join(missing)}, which "
             "the model file lacks; added for robosuite on the body each arm's first link hangs from (add "
             "them to the model file to place them yourself)",
             AssemblerWarning,

@@ -26,7 +26,7 @@ from robosuite.controllers.composite import composite_controller_factory as fact
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, ManipulatorModel
-from assembler.robosuite.robot_type import base_in_robosuite
+from assembler.robosuite.robot_type import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
 
 CONTROLLER = FieldPath(("robosuite", "controller"))
 
@@ -51,6 +51,9 @@ BINDINGS: tuple[str, ...] = (
     "robosuite",
 )
 """The modules that hold ``load_composite_controller_config`` under that name."""
+
+BASE_DRIVEN_BY: dict[str, set[str]] = {"WheeledRobot": {"base"}, "LeggedRobot": {"base"}}
+"""The robot classes of robosuite that drive a base (with velocities, so not in ``DRIVEN_GROUPS``)."""
 
 Loader = Callable[..., dict[str, Any]]
 ROBOSUITES_LOADER: Loader = factory.load_composite_controller_config
@@ -133,7 +136,11 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
 
 def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
     """robosuite's configuration for the robot's arms, plus the other parts it has actuators for on
-    the base robosuite stands it on (its default base, or its stand-in base)."""
+    the base robosuite stands it on (its default base, or its stand-in base) that its robosuite Robot
+    class drives: a FixedBaseRobot drives arms only, and a composite controller for parts nobody
+    drives would add action dimensions that do nothing (HYBRID_MOBILE_BASE's base-mode flag)."""
+    robot_type = robot_type_name(robot_class)
+    driven = set(DRIVEN_GROUPS[robot_type]) | BASE_DRIVEN_BY.get(robot_type, set())
     robot = robot_class(idn=0)
     spec = robot_class.spec
     robot.add_base(REGISTERED_BASES.lookup(base_in_robosuite(spec))(idn=0))
@@ -145,7 +152,8 @@ def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
         "legs": robot.legs_actuators,
     }
     for part, actuators in actuated.items():
-        if actuators:
+        actuated[part] = actuators if part in driven else []
+        if actuated[part]:
             config["body_parts"][part] = copy.deepcopy(
                 flattened(_robosuite_file(EXTRA_PARTS_FROM[part]))["body_parts"][part]
             )

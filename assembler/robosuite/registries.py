@@ -81,11 +81,19 @@ def ours(existing: type | None) -> type[PartModel] | None:
     return getattr(existing, "assembler_class", None)
 
 
+def _same_spec(registered: type[PartModel] | None, spec_class: type[PartModel]) -> bool:
+    """Whether ``registered`` is ``spec_class``, or the same spec registered again (a folder given both
+    in ``ASSEMBLER_ROBOSUITE_SPECS`` and to ``register``): registering it again changes nothing."""
+    return registered is spec_class or (registered is not None and registered.spec == spec_class.spec)
+
+
 def _conflict(spec_class: type[PartModel], replace: bool, replace_ours: bool) -> Problem | None:
     """Why ``spec_class`` cannot take its name in robosuite's table, if it cannot."""
     family, name = family_of(spec_class), spec_class.__name__
     existing = registered_class(family, name)
-    if existing is None or ours(existing) is spec_class or (replace_ours and ours(existing) is not None):
+    if existing is None or _same_spec(ours(existing), spec_class):
+        return None
+    if replace_ours and ours(existing) is not None:
         return None
     if robosuite_has(family, name):
         if replace:

@@ -26,9 +26,10 @@ from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorM
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
 from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
+from assembler.robosuite.placement import offsets
 from assembler.robosuite.robot_type import base_in_robosuite
 from assembler.robosuite.same_names import check_same_names
-from assembler.schema.expressions import ExpressionError, evaluate_expression
+from assembler.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)
 
@@ -115,9 +116,9 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     @property
     def base_xpos_offset(self) -> dict[str, Any]:
         """Per arena, robosuite's shapes: ``["table"]`` a function of the table length (positional),
-        every other arena three numbers."""
-        offsets = {**DEFAULT_BASE_XPOS_OFFSET, **self.spec.base_xpos_offset}
-        return {arena: offset_for_robosuite(arena, offset) for arena, offset in offsets.items()}
+        every other arena three numbers; arenas the spec leaves out get robosuite's defaults
+        (:mod:`assembler.robosuite.placement`)."""
+        return offsets(self.spec)
 
     @property
     def top_offset(self) -> FloatArray:
@@ -193,28 +194,6 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = [by_name.get((e.tag, e.get("name")), e) for e in value]
             else:
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
-
-
-DEFAULT_BASE_XPOS_OFFSET: dict[str, tuple[float | str, float | str, float | str]] = {
-    "bins": (-0.5, -0.1, 0.0),
-    "empty": (-0.6, 0.0, 0.0),
-    "table": ("-0.16 - table_length / 2", 0.0, 0.0),
-}
-"""robosuite's Panda's placement per arena, which a spec robot takes for every arena its
-``base_xpos_offset`` leaves out (robosuite's environments read all three; docs/robosuite.md)."""
-
-
-def offset_for_robosuite(arena: str, offset: tuple[float | str, float | str, float | str]) -> Any:
-    """A base offset in the shape robosuite reads: for ``table`` a function of the table length
-    (robosuite passes it positionally), for other arenas three numbers."""
-
-    def evaluated(**variables: float) -> tuple[float, float, float]:
-        x, y, z = (evaluate_expression(value, variables) for value in offset)
-        return (x, y, z)
-
-    if arena == "table":
-        return lambda table_length: evaluated(table_length=table_length)
-    return evaluated()
 
 
 def our_part(registry: Registry[P], robosuite_part: Any) -> type[P]:
