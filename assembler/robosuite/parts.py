@@ -73,8 +73,8 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
             robot.spec_problem(
                 JOINT_GROUPS,
                 f"robosuite's controllers drive each joint of the groups they control with one actuator, "
-                f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none (a mimic follower?): "
-                "declare an actuator for each, "
+                f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none "
+                "(a mimic follower?): declare an actuator for each, "
                 "or set robosuite.enabled: false for a robot robosuite cannot drive",
             )
         )
