@@ -32,10 +32,12 @@ class GripperSpec(PartSpec):
     """Number of actions the gripper takes; null: the number of ``actions`` (or of actuators without them)."""
 
     actions: GripperActions | None = None
-    """How a policy's actions drive the actuators (robosuite's format_action); null: none declared."""
+    """How a policy's actions drive the actuators (robosuite's format_action); null: none declared, which
+    robosuite refuses for a gripper with actuators (lint RA703)."""
 
     speed: NonNegativeFloat = 0.0
-    """How fast an action moves the fingers (robosuite's per-step increment)."""
+    """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
+    speed)."""
 
     important_sites: dict[str, str] = Field(default_factory=_default_sites)
     """Role -> site name; every site must exist in the MJCF."""

@@ -47,19 +47,24 @@ ActionInput = Literal["sign", "value"]
 
 
 class GripperActions(StrictModel):
-    """The whole mapping from a policy's gripper actions to actuator outputs."""
+    """How a policy's gripper actions become actuator outputs (robosuite's format_action): outputs are in
+    [-1, 1], and robosuite's gripper controller maps each onto its actuator's ctrlrange."""
 
     dimensions: list[GripperAction] = Field(default_factory=list)
     """One entry per action dimension, in order; the gripper's dof is their number."""
 
     mode: ActionMode = "incremental"
-    """incremental (robosuite's two-finger grippers) or absolute (robosuite's hands)."""
+    """incremental: every step moves each output by the gripper's speed in its action's direction, so
+    fingers keep closing while the action says close (robosuite's two-finger grippers); absolute: the action
+    is the output (robosuite's dexterous hands)."""
 
     reads: ActionInput | None = None
-    """How an action is read; null: sign when incremental, value when absolute."""
+    """How an action is read: sign (only whether it is positive or negative counts) or value; null: sign
+    when incremental, value when absolute."""
 
     hold: dict[str, FiniteFloat] = Field(default_factory=dict)
-    """Actuators held at a constant output in [-1, 1], driven by no action."""
+    """Actuators held at a constant output in [-1, 1], driven by no action (e.g. the scissor joint of
+    robosuite's Robotiq three-finger gripper); actuators neither driven nor held output 0."""
 
     @model_validator(mode="after")
     def _each_actuator_once(self) -> GripperActions:

@@ -24,13 +24,17 @@ class RobosuiteOptions(StrictModel):
     false for a robot robosuite's controllers cannot drive (say why beside it)."""
 
     controller: str | dict[str, Any] | None = None
-    """The composite controller configuration: one of robosuite's by name (e.g. default_panda, BASIC) or the
-    configuration itself (body_parts, ...; joint and site names without the robot's prefix); null: robosuite's
-    default_panda for one arm, default_baxter for two."""
+    """The composite controller configuration robosuite builds the robot's controllers from: one of
+    robosuite's by name (e.g. BASIC, default_panda), a .json file (relative to this spec), or the
+    configuration itself (type, body_parts, ...; joint and site names without the robot's prefix); null:
+    robosuite's default_panda for one arm, default_baxter for two, plus robosuite's settings for the base,
+    torso, head and legs the robot has actuators for (robosuite's own robots keep robosuite's choice)."""
 
     robot_type: RobotType | None = None
-    """robosuite's Robot class; null: WheeledRobot on a mobile base, LeggedRobot on a legged base or for a
-    legged morphology, FixedBaseRobot otherwise."""
+    """robosuite's Robot class, which decides what gets controllers (FixedBaseRobot: the arms;
+    WheeledRobot: also the base, torso and head; LeggedRobot: also the legs); null: WheeledRobot on a mobile
+    base, LeggedRobot on a legged base or for a legged morphology, FixedBaseRobot otherwise (the base is
+    default_base, else stand_in_base)."""
 
     actuation: Actuation | None = None
     """torque: each position servo robosuite's controllers drive (the arms'; the torso's and head's on a

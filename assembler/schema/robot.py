@@ -121,7 +121,8 @@ class RobotSpec(PartSpec):
     """Controller config name per body part (e.g. right: default_panda), for controller libraries."""
 
     robosuite: RobosuiteOptions = Field(default_factory=RobosuiteOptions)
-    """How the robot enters robosuite's environments; every field has a default by morphology."""
+    """How the robot enters robosuite's environments (docs/robosuite.md); every field has a default by
+    arms, base and morphology."""
 
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
     """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length."""
