@@ -2,8 +2,8 @@
 
 ``assembler lint`` checks robots against robosuite's needs (RA701-RA704) where robosuite may not be
 installed, so it cannot import the bridge (:mod:`assembler.robosuite` imports robosuite first). The
-bridge states the same facts in ``robosuite/robot_type.py``, ``robosuite/parts.py`` and
-``robosuite/grip_frames.py``; ``tests/test_lint.py`` checks that both give the same answers.
+bridge reads its robot types and driven groups from here too; ``tests/test_lint.py`` checks that the
+grip frames and servos lint sees are the ones the bridge adds and converts.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from __future__ import annotations
 import mujoco
 
 from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.schema import RobotSpec
 
 BY_BASE_TYPE: dict[str, str] = {
     "mount": "FixedBaseRobot",
@@ -37,18 +38,39 @@ GRIP_FRAMES: tuple[tuple[mujoco.mjtObj, str], ...] = (
 )
 """The body and sites robosuite looks a gripper up by (its GripperModel and its robots)."""
 
+GRIP_SENSOR_ROLES: tuple[str, ...] = ("force_ee", "torque_ee")
+"""The end-effector sensors robosuite's robots read at every step (``Robot.ee_force``/``ee_torque``)."""
+
+
+def grip_sensors(important_sensors: dict[str, str]) -> list[tuple[mujoco.mjtObj, str]]:
+    """The sensors robosuite reads of a gripper whose spec names ``important_sensors``."""
+    return [(mujoco.mjtObj.mjOBJ_SENSOR, important_sensors.get(role, role)) for role in GRIP_SENSOR_ROLES]
+
+
 AFFINE = int(mujoco.mjtBias.mjBIAS_AFFINE)
 FIXED = int(mujoco.mjtGain.mjGAIN_FIXED)
 
 
+def base_in_robosuite(spec: RobotSpec) -> str:
+    """The base a spec robot stands on in robosuite: its default base, else its stand-in (declared, or
+    by morphology: see ``RobosuiteOptions.stand_in_base``)."""
+    if spec.default_base is not None:
+        return spec.default_base
+    if spec.robosuite.stand_in_base is not None:
+        return spec.robosuite.stand_in_base
+    return "NoActuationBase" if spec.morphology in LEGGED_MORPHOLOGIES else "NullMount"
+
+
 def robot_type_name(robot_class: type[ManipulatorModel]) -> str:
-    """robosuite's Robot class for ``robot_class``: declared, else by morphology and base."""
+    """robosuite's Robot class for ``robot_class`` (FixedBaseRobot, WheeledRobot or LeggedRobot, the
+    only ones robosuite's environments accept): declared, else by morphology and base. The class
+    decides which body parts get controllers (``DRIVEN_GROUPS``)."""
     spec = robot_class.spec
     if spec.robosuite.robot_type is not None:
         return str(spec.robosuite.robot_type)
     if spec.morphology in LEGGED_MORPHOLOGIES:
         return "LeggedRobot"
-    base = REGISTERED_BASES.get(spec.default_base or spec.robosuite.stand_in_base)
+    base = REGISTERED_BASES.get(base_in_robosuite(spec))
     return BY_BASE_TYPE[base.spec.type] if base is not None else "FixedBaseRobot"
 
 

@@ -64,19 +64,11 @@ def test_urdf_part_holds_its_home_pose_for_one_second(kind: str, name: str) -> N
     assert drift.max() < SAG, f"qpos[{int(np.argmax(drift))}] drifts {drift.max():.3f} rad from home in 1 s"
 
 
-NO_CENTER = "RA704 robot0_{}_center"
-"""A URDF holds no sites, so no arm has the center site robosuite's controllers read."""
-
 LINT_WARNINGS = {
-    "FrankaPanda": ["RA203 robot0_panda_link1", NO_CENTER.format("right")],  # identified inertia (Gaz et al.)
-    "UR5": [
-        "RA203 robot0_wrist_1_link",
-        "RA203 robot0_wrist_2_link",
-        "RA203 robot0_wrist_3_link",
-        NO_CENTER.format("right"),
-    ],
-    "SO101": [NO_CENTER.format("right")],
-    "G1": [NO_CENTER.format("right"), NO_CENTER.format("left")],
+    "FrankaPanda": ["RA203 robot0_panda_link1"],  # identified inertia (Gaz et al.)
+    "UR5": ["RA203 robot0_wrist_1_link", "RA203 robot0_wrist_2_link", "RA203 robot0_wrist_3_link"],
+    "SO101": [],
+    "G1": [],
 }
 """Findings expected from the vendors' files: ur_description's wrist inertias are known placeholders."""
 

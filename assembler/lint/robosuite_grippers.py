@@ -17,7 +17,7 @@ from assembler.fieldpath import FieldPath
 from assembler.lint.finding import Finding
 from assembler.lint.target import LintTarget
 from assembler.models import GripperModel
-from assembler.robosuite_terms import GRIP_FRAMES
+from assembler.robosuite_terms import GRIP_FRAMES, grip_sensors
 
 
 def _grippers(target: LintTarget) -> Iterator[GripperModel]:
@@ -30,9 +30,10 @@ def grip_frames_added_for_robosuite(target: LintTarget) -> Iterator[Finding]:
     """RA702 (info): a gripper lacks robosuite's ``eef`` body or grip sites, which robosuite then gets
     at the spec's ``eef_body``."""
     for part in _grippers(target):
+        looked_up = [*GRIP_FRAMES, *grip_sensors(part.spec.important_sensors)]
         missing = [
             f"{kind.name.removeprefix('mjOBJ_').lower()} '{name}'"
-            for kind, name in GRIP_FRAMES
+            for kind, name in looked_up
             if mujoco.mj_name2id(target.model, kind, part.naming_prefix + name) < 0
         ]
         if not missing:
@@ -43,8 +44,9 @@ def grip_frames_added_for_robosuite(target: LintTarget) -> Iterator[Finding]:
             severity="info",
             subject=type(part).__name__,
             why=(
-                f"robosuite looks a gripper up by body 'eef' and sites 'grip_site' and 'grip_site_cylinder'; "
-                f"this one lacks {', '.join(missing)}, which robosuite gets at body '{eef_body}' (eef_body)"
+                "robosuite looks a gripper up by body 'eef', sites 'grip_site' and 'grip_site_cylinder' and "
+                f"its force and torque sensors; this one lacks {', '.join(missing)}, which robosuite gets "
+                f"at body '{eef_body}' (eef_body; the sensors at the gripper's root)"
             ),
             fix=(
                 f"nothing, if body '{eef_body}' is the grip point; else add them to the MJCF where the "

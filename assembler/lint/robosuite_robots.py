@@ -78,7 +78,8 @@ def servos_robosuite_cannot_drive(target: LintTarget) -> Iterator[Finding]:
 
 
 def missing_arm_centers(target: LintTarget) -> Iterator[Finding]:
-    """RA704 (warning): an arm without the ``{arm}_center`` site robosuite's composite controller reads."""
+    """RA704 (info): an arm without the ``{arm}_center`` site robosuite's composite controller reads,
+    which ``assembler.robosuite`` then adds for robosuite (and says so)."""
     model = target.model
     for robot in _robots(target):
         for arm in robot.arms:
@@ -87,12 +88,12 @@ def missing_arm_centers(target: LintTarget) -> Iterator[Finding]:
                 continue
             yield Finding(
                 code="RA704",
-                severity="warning",
+                severity="info",
                 subject=site,
                 why=(
                     f"robosuite's composite controller reads the {arm} arm's origin from site "
-                    f"{arm_center_site(arm)} at every step, and the model has none: robosuite's "
-                    "environments fail when they are made"
+                    f"{arm_center_site(arm)} at every step, and the model has none: in robosuite's "
+                    "environments it is added on the body the arm's first link hangs from"
                 ),
                 fix=_center_fix(robot.spec.source_field, arm_center_site(arm), arm),
                 location=target.spec_location(robot, FieldPath((robot.spec.source_field,))),

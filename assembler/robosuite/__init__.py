@@ -21,6 +21,7 @@ except ImportError as error:  # pragma: no cover - depends on the installation
         f"assembler.robosuite needs robosuite ({error}); install it with: pip install -e '.[robosuite]'"
     ) from None
 
+import assembler.catalog  # noqa: F401  (registers the shipped specs on first import)
 from assembler.errors import Problem, RegistryError, did_you_mean
 from assembler.models import REGISTRIES, PartModel
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
@@ -32,8 +33,6 @@ __all__ = ["register", "register_experiment", "registered", "replace_robosuite",
 
 
 def _shipped() -> list[type[PartModel]]:
-    import assembler.catalog  # noqa: F401  (registers the shipped specs on first import)
-
     return [cls for table in REGISTRIES.values() for cls in table.values() if _enters_robosuite(cls)]
 
 

@@ -14,7 +14,10 @@ import sys
 import sysconfig
 from pathlib import Path
 
+import assembler.robosuite  # noqa: F401  (registers the spec robots, as the package's __init__ has)
 from assembler.cli.endings import end_cleanly
+from assembler.robosuite_hook import PTH_LINE
+from assembler.writing import write_atomically
 
 PTH_NAME = "assembler-robosuite.pth"
 
@@ -30,9 +33,6 @@ def setup(argv: list[str]) -> int:
         print(__doc__)
         return 0 if argv else 2
     if argv[0] == "--install-hook":
-        from assembler.robosuite_hook import PTH_LINE
-        from assembler.writing import write_atomically
-
         write_atomically(hook_path(), PTH_LINE)
         print(
             f"wrote {hook_path()}: scripts register spec robots with robosuite while "
@@ -44,9 +44,7 @@ def setup(argv: list[str]) -> int:
         hook_path().unlink(missing_ok=True)
         print(f"removed {hook_path()}")
         return 0
-    import assembler.robosuite  # noqa: F401  (registers, with the variables' folders and experiment)
-
-    return -1
+    return -1  # importing this package registered the specs, with the variables' folders and experiment
 
 
 def main(argv: list[str]) -> int:

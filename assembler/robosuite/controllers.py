@@ -26,7 +26,7 @@ from robosuite.controllers.composite import composite_controller_factory as fact
 from assembler.errors import SpecError
 from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, ManipulatorModel
-from assembler.robosuite.robot_type import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
+from assembler.robosuite_terms import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
 
 CONTROLLER = FieldPath(("robosuite", "controller"))
 

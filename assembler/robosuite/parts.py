@@ -26,7 +26,7 @@ from assembler.robosuite.files import written_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.lossless import lossless_xml
-from assembler.robosuite.robot_type import DRIVEN_GROUPS, robot_type_name
+from assembler.robosuite_terms import DRIVEN_GROUPS, robot_type_name
 
 P = TypeVar("P", bound=PartModel)
 

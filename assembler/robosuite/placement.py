@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from assembler.schema.expressions import evaluate_expression
+
 OffsetValue = float | str
 
 DEFAULT_OFFSETS: dict[str, dict[str, tuple[OffsetValue, OffsetValue, OffsetValue]]] = {
@@ -38,7 +40,6 @@ def offsets(spec: Any) -> dict[str, Any]:
 
 def _for_robosuite(spec: Any, arena: str, default: bool) -> Any:
     """One arena's offset: ``table``'s a function of the table length, every other three numbers."""
-    from assembler.schema.expressions import evaluate_expression
 
     def resolve(**variables: float) -> tuple[float, float, float]:
         if not default:

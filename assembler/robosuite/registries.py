@@ -6,7 +6,7 @@ attribute (``robosuite.models.grippers.PandaGripper``). A spec whose name robosu
 (our specs of robosuite's own robots, or a user's "Panda") enters only when replacement is asked
 for; otherwise registering it is an error that names both. Replacements are logged in one line and
 listed by :func:`replaced`. Robots of robosuite's names keep robosuite's Robot class (GR1 is a
-LeggedRobot); new names get theirs from :mod:`assembler.robosuite.robot_type`.
+LeggedRobot); new names get theirs from :mod:`assembler.robosuite_terms`.
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotBas
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.part_classes import robosuite_class_of
 from assembler.robosuite.robot_class import robot_class
-from assembler.robosuite.robot_type import robot_type_name
+from assembler.robosuite_terms import robot_type_name
 
 LOG = logging.getLogger("assembler.robosuite")
 NAME = FieldPath(("name",))

@@ -27,8 +27,8 @@ from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
 from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
 from assembler.robosuite.placement import offsets
-from assembler.robosuite.robot_type import base_in_robosuite
 from assembler.robosuite.same_names import check_same_names
+from assembler.robosuite_terms import base_in_robosuite
 from assembler.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)

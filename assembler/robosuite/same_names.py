@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 from assembler.errors import AssemblerError
+from assembler.robosuite.part_classes import robosuite_class_of  # the classes import this module
 
 ORDERED: tuple[str, ...] = ("joints", "actuators")
 """Lists whose order robosuite relies on."""
@@ -29,7 +30,6 @@ def check_same_names(theirs: Any, spec_class: type) -> None:
     pair = (type(theirs), spec_class)
     if pair in _checked:
         return
-    from assembler.robosuite.part_classes import robosuite_class_of  # the classes import this module
 
     ours = robosuite_class_of(spec_class)(idn=theirs.idn)
     differences = []
