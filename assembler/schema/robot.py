@@ -125,7 +125,9 @@ class RobotSpec(PartSpec):
     arms, base and morphology."""
 
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
-    """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length."""
+    """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length.
+    In robosuite's environments an arena left out takes robosuite's value for the arm type (Panda's for
+    one arm, Baxter's for two)."""
 
     top_offset: Vec3 = (0.0, 0.0, 1.0)
     """Offset from the robot's root to its top, in metres (robosuite's placeholder is 0, 0, 1)."""
