@@ -40,7 +40,12 @@ ROBOTS_IN_LIFT = ["IIWA", "Sawyer", "Jaco", "Kinova3", "UR5e", "XArm7", "PandaDe
 ROBOTS_IN_LIFT += ["Tiago", "PandaOmron", "SpotWithArm"]
 CASES = ENVIRONMENTS + [("Lift", robot) for robot in ROBOTS_IN_LIFT]
 
-MOUNT_RENAMED = {"Tiago": "manipulator_mount", "PandaOmron": "manipulator_mount", "SpotWithArm": None}
+MOUNT_RENAMED = {
+    "Tiago": "manipulator_mount",
+    "PandaOmron": "manipulator_mount",
+    "GR1ArmsOnly": "manipulator_mount",
+    "SpotWithArm": None,
+}
 """D1 and D2 (docs/robosuite-parity.md): the body robosuite's add_mobile_base/add_leg_base adds."""
 
 
