@@ -44,9 +44,8 @@ ROBOT_TYPES = {
     "Biped": "LeggedRobot",  # humanoids drive their legs
     "BipedFree": "LeggedRobot",
 }
-ROBOT_TYPES |= (
-    {"FrankaPanda": "FixedBaseRobot", "UR5": "FixedBaseRobot", "SO101": "FixedBaseRobot"} if URDF else {}
-)
+# FrankaPanda's spec says robosuite.enabled: false (its hand is in its URDF): it is not offered
+ROBOT_TYPES |= {"UR5": "FixedBaseRobot", "SO101": "FixedBaseRobot"} if URDF else {}
 ROBOT_TYPES |= {"G1": "LeggedRobot"} if URDF else {}
 GRIPPERS = {"PincerGripper", "BareFlange", "TriHand"} | ({"AllegroRightHand"} if URDF else set())
 BASES = {
