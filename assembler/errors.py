@@ -83,6 +83,10 @@ class MujocoWarning(UserWarning):
     """A warning MuJoCo gave while the assembler read or compiled a model."""
 
 
+class AssemblerWarning(UserWarning):
+    """Something the user wrote that a consumer of the model (e.g. robosuite) will not do as written."""
+
+
 class JointAttributeError(AssemblerError):
     """``set_joint_attribute`` got an unsupported attribute or the wrong number of values."""
 

@@ -4,7 +4,8 @@ It measures, and prints as ratios against their references, the issue's six targ
 processes beside in-process parts: (1) a model not cached whose meshes were seen, and first
 contact, against MuJoCo compiling robosuite's XML; (2) a cached model against the ``.mjb`` floor;
 (3) start-up; (4) ``get_xml`` and ``build -o``; (5) variants and ``--jobs``; (6) scale and repeated
-load. Every robot of ``specs/robosuite/robots`` is measured for (1) and (2) (robots that fail to
+load; and robosuite environments with robots from our specs against robosuite's classes. Every robot
+of ``specs/robosuite/robots`` is measured for (1) and (2) (robots that fail to
 build on either side are reported and skipped), our own robots for (2). The caches used are
 temporary folders, never the user's. A full run writes ``benchmarks/results.json`` and
 ``benchmarks/results.md``; ``--quick`` (a smoke run on Panda when robosuite is installed, and
@@ -56,7 +57,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[Figure], list[str]]:
-    from benchmarks import fresh, in_process, variants, whole
+    from benchmarks import environments, fresh, in_process, variants, whole
     from benchmarks.references import own_robots, robosuite_installed, robosuite_robots
     from tests.parity.robosuite_side import robosuite_xml
 
@@ -117,6 +118,8 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
         guarded(xml_robots[0], lambda: variant_figures(xml_robots[0]))
     for name in dict.fromkeys(xml_robots + own[:1]):
         guarded(name, lambda name=name: in_process.repeated(name, in_process_repeats))
+    if robosuite:
+        guarded("environments", lambda: environments.environment_figures(repeats))
     counts = [1, 2, 4] if quick else [1, 2, 4, 8, 16, 32]
     scale_rows, scale_figure = fresh.scale(counts, repeats)
     record(scale_figure)

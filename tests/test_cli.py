@@ -48,7 +48,7 @@ def test_validate_reports_every_problem_as_file_line_col(capsys: pytest.CaptureF
         "a.yaml:3:1: dampng: unknown key 'dampng'. Valid keys here: actuators, add_free_joint, arm_type, balance_inertia, base_xpos_offset,"
         in lines[0]
     )
-    assert lines[0].endswith(", remove_free_joint, top_offset, urdf")
+    assert lines[0].endswith(", remove_free_joint, robosuite, top_offset, urdf")
     assert lines[1].endswith("b.yaml:1:1: give exactly one of mjcf and urdf (the model file), got neither")
     assert "Traceback" not in err
 

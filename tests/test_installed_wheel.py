@@ -51,6 +51,7 @@ BLOCKY_MJCF = """\
     <body name="base">
       <geom name="base_col" type="box" size="0.1 0.1 0.05" mass="5"/>
       <geom name="base_vis" type="box" size="0.1 0.1 0.05" group="1" contype="0" conaffinity="0" mass="0"/>
+      <site name="right_center" pos="0 0 0.1"/>
       <body name="link1" pos="0 0 0.1">
         <joint name="joint1" axis="0 0 1" range="-3 3"/>
         <geom name="link1_col" type="capsule" fromto="0 0 0 0.3 0 0" size="0.03" mass="1"/>
@@ -61,11 +62,12 @@ BLOCKY_MJCF = """\
     </body>
   </worldbody>
   <actuator>
-    <position name="act1" joint="joint1" kp="50" dampratio="1" ctrlrange="-3 3"/>
+    <motor name="act1" joint="joint1" ctrlrange="-20 20"/>
   </actuator>
 </mujoco>
 """
-"""A new robot, as "Adding a robot" has one added: one root body, named joints, visual geoms in group 1."""
+"""A new robot, as "Adding a robot" has one added: one root body, named joints, visual geoms in group 1,
+the arm's center site and motors (what robosuite's controllers drive)."""
 
 
 @dataclass(frozen=True)

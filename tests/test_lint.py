@@ -12,9 +12,12 @@ from pathlib import Path
 import pytest
 import yaml
 
+import assembler.catalog  # noqa: F401  (registers the shipped specs)
+from assembler import robosuite_terms
 from assembler.cli import build_parser, main
 from assembler.cli.report import github_annotation
 from assembler.errors import Location
+from assembler.models import REGISTERED_ROBOTS, ManipulatorModel
 
 ROOT = Path(__file__).parent.parent
 Write = Callable[[str, str], Path]
@@ -24,7 +27,7 @@ PROBE_MJCF = """\
   <compiler angle="radian" autolimits="true"/>
   <worldbody>
     <body name="base">
-      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/><geom name="base_vis" type="cylinder" size="0.05 0.05" group="1" contype="0" conaffinity="0" mass="0"/>
+      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/><geom name="base_vis" type="cylinder" size="0.05 0.05" group="1" contype="0" conaffinity="0" mass="0"/><site name="right_center"/>
       <body name="link1" pos="0 0 0.1">
         <joint name="shoulder" axis="0 0 1" range="-2 2"/>
         <geom name="link1_col" type="capsule" fromto="0 0 0 0.3 0 0" size="0.03" mass="1"/>
@@ -37,15 +40,15 @@ PROBE_MJCF = """\
     </body>
   </worldbody>
   <actuator>
-    <position name="act_shoulder" joint="shoulder" kp="200" dampratio="1" ctrlrange="-2 2"/>
-    <position name="act_elbow" joint="elbow" kp="100" dampratio="1" ctrlrange="-2 2"/>
+    <position name="act_shoulder" joint="shoulder" kp="200" dampratio="1" ctrlrange="-2 2" forcerange="-80 80"/>
+    <position name="act_elbow" joint="elbow" kp="100" dampratio="1" ctrlrange="-2 2" forcerange="-40 40"/>
   </actuator>
 </mujoco>
 """
-"""A clean two-link arm (no findings: it has a visual geom, so robosuite's cameras see it); each
-test breaks one thing in it."""
+"""A clean two-link arm (no findings: it has a visual geom, so robosuite's cameras see it, and the
+right_center site and force ranges robosuite's controllers need); each test breaks one thing in it."""
 
-PROBE_SPEC = "name: Probe\nmjcf: probe.xml\ninit_qpos: [0.3, -0.5]\n"
+PROBE_SPEC = "name: Probe\nmjcf: probe.xml\ninit_qpos: [0.3, -0.5]\nrobosuite: {actuation: torque}\n"
 
 FINGER_MJCF = """\
 <mujoco model="finger">
@@ -202,7 +205,7 @@ def test_armature_the_index_rule_made_tiny(capsys: pytest.CaptureFixture[str], w
     assert str(findings[0]["file"]).endswith("probe/probe.yaml") and (
         findings[0]["line"],
         findings[0]["column"],
-    ) == (5, 13)
+    ) == (6, 13)
 
 
 def test_a_missing_end_effector_body_is_a_spec_problem_before_anything_is_linted(
@@ -215,7 +218,7 @@ def test_a_missing_end_effector_body_is_a_spec_problem_before_anything_is_linted
     assert main_code == 1 and report["targets"] == []
     (problem,) = report["problems"]
     assert str(problem["file"]).endswith("probe/probe.yaml") and (problem["line"], problem["column"]) == (
-        4,
+        5,
         21,
     )
     assert problem["message"].endswith(
@@ -230,7 +233,8 @@ def test_gripper_without_fingerpads_or_with_a_pad_that_cannot_touch(
     write("hand/finger.xml", FINGER_MJCF)
     spec = write(
         "hand/finger.yaml",
-        "kind: gripper\nname: Finger\nmjcf: finger.xml\nimportant_geoms:\n  left_fingerpad: [pad_vis]\n",
+        "kind: gripper\nname: Finger\nmjcf: finger.xml\nimportant_geoms:\n  left_fingerpad: [pad_vis]\n"
+        "actions: {dimensions: [{actuators: [finger_act]}]}\n",
     )
     code, findings = lint_json(capsys, str(spec))
     assert code == 0
@@ -255,6 +259,108 @@ def test_home_pose_outside_a_joint_range_is_an_error(
         == "bring init_qpos[1] within [-2, 2] (radians for hinges), or fix the joint's range"
     )
     assert (findings[0]["line"], findings[0]["column"]) == (3, 18)
+
+
+FINGER_SPEC = (
+    "kind: gripper\nname: Finger\nmjcf: finger.xml\n"
+    "important_geoms: {left_fingerpad: [pad_col], right_fingerpad: [pad_col]}\n"
+    "actions: {dimensions: [{actuators: [finger_act]}]}\n"
+)
+"""The finger gripper with its pads and actions: no findings."""
+
+UNSET = "set robosuite.actuation to torque (each servo becomes a motor whose ctrlrange is its forcerange) or to as_is (keep the servos)"
+
+ROBOSUITE_CASES = {
+    "servos without robosuite.actuation": (
+        {
+            "probe/probe.xml": PROBE_MJCF,
+            "probe/probe.yaml": PROBE_SPEC.replace("robosuite: {actuation: torque}\n", ""),
+        },
+        ("RA701", "warning", "Probe"),
+        "the actuators robosuite's controllers drive (robot0_act_shoulder, robot0_act_elbow) are position "
+        "servos, but those controllers write torques into ctrl and robosuite.actuation is not set: robosuite "
+        "refuses the robot",
+        UNSET,
+    ),
+    "actuation torque for a servo without forcerange": (
+        {"probe/probe.xml": PROBE_MJCF.replace(' forcerange="-40 40"', ""), "probe/probe.yaml": PROBE_SPEC},
+        ("RA701", "error", "robot0_act_elbow"),
+        "robosuite.actuation is torque, but this position servo has no forcerange to become its motor's "
+        "ctrlrange: robosuite refuses the robot",
+        "give the actuator a forcerange (its torque or force limits), or set robosuite.actuation to as_is",
+    ),
+    "gripper without robosuite's eef body": (
+        {
+            "hand/finger.xml": FINGER_MJCF.replace('<body name="eef"', '<body name="tip"'),
+            "hand/finger.yaml": FINGER_SPEC + "eef_body: tip\n",
+        },
+        ("RA702", "info", "Finger"),
+        "robosuite looks a gripper up by body 'eef', sites 'grip_site' and 'grip_site_cylinder' and its force "
+        "and torque sensors; this one lacks body 'eef', which robosuite gets at body 'tip' (eef_body; the "
+        "sensors at the gripper's root)",
+        "nothing, if body 'tip' is the grip point; else add them to the MJCF where the fingers close",
+    ),
+    "gripper with actuators and no actions": (
+        {"hand/finger.xml": FINGER_MJCF, "hand/finger.yaml": FINGER_SPEC.split("actions:")[0]},
+        ("RA703", "warning", "Finger"),
+        "the gripper has actuators (finger_act) but no actions: block saying how a policy's actions drive "
+        "them: robosuite refuses it",
+        "add actions: with one entry per action dimension, naming the actuators it drives and their "
+        "direction (docs/robosuite.md, Gripper actions)",
+    ),
+    "arm without its center site": (
+        {
+            "probe/probe.xml": PROBE_MJCF.replace('<site name="right_center"/>', ""),
+            "probe/probe.yaml": PROBE_SPEC,
+        },
+        ("RA704", "info", "robot0_right_center"),
+        "robosuite's composite controller reads the right arm's origin from site right_center at every "
+        "step, and the model has none: in robosuite's environments it is added on the body the arm's first "
+        "link hangs from",
+        'add <site name="right_center"/> to the body the right arm starts from (robosuite\'s Panda: link0), '
+        "in the robot's MJCF",
+    ),
+}
+"""Per RA7xx rule, files that break only it: the finding, why and fix."""
+
+
+@pytest.mark.parametrize("case", sorted(ROBOSUITE_CASES))
+def test_what_robosuite_would_refuse_is_reported_with_what_to_do(
+    capsys: pytest.CaptureFixture[str], write: Write, case: str
+) -> None:
+    files, finding, why, fix = ROBOSUITE_CASES[case]
+    paths = [write(name, text) for name, text in files.items()]
+    code, findings = lint_json(capsys, str(paths[-1]))
+    assert codes(findings) == [finding]
+    assert (findings[0]["why"], findings[0]["fix"]) == (why, fix)
+    assert code == (1 if finding[1] == "error" else 0)
+
+
+def test_the_finger_gripper_with_pads_and_actions_is_clean(
+    capsys: pytest.CaptureFixture[str], write: Write
+) -> None:
+    write("hand/finger.xml", FINGER_MJCF)
+    assert main(["lint", str(write("hand/finger.yaml", FINGER_SPEC))]) == 0
+    assert capsys.readouterr().out == "Finger: no findings\n"
+
+
+def test_lint_and_the_robosuite_bridge_agree_on_what_robosuite_drives_and_looks_up() -> None:
+    pytest.importorskip("robosuite")
+    from assembler.robosuite import grip_frames, parts  # the bridge imports robosuite
+
+    assert [name for _, name in robosuite_terms.GRIP_FRAMES] == [
+        grip_frames.EEF,
+        grip_frames.GRIP_SITE,
+        grip_frames.GRIP_CYLINDER,
+    ]
+    for name in ("Sparrow7", "TwinTorso", "Biped", "PandaOmron", "GR1", "SpotWithArm"):
+        cls = REGISTERED_ROBOTS.lookup(name)
+        assert issubclass(cls, ManipulatorModel)
+        robot = cls(idn=0)
+        ours = {
+            actuator.removeprefix(robot.naming_prefix) for actuator in robosuite_terms.driven_actuators(robot)
+        }
+        assert ours == parts.driven_actuators(robot), name
 
 
 def test_github_format_prints_annotations(capsys: pytest.CaptureFixture[str], write: Write) -> None:

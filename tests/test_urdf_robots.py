@@ -65,7 +65,7 @@ def test_urdf_part_holds_its_home_pose_for_one_second(kind: str, name: str) -> N
 
 
 LINT_WARNINGS = {
-    "FrankaPanda": ["RA203 robot0_panda_link1"],  # identified inertia (Gaz et al.), as Sparrow7's
+    "FrankaPanda": ["RA203 robot0_panda_link1"],  # identified inertia (Gaz et al.)
     "UR5": ["RA203 robot0_wrist_1_link", "RA203 robot0_wrist_2_link", "RA203 robot0_wrist_3_link"],
     "SO101": [],
     "G1": [],

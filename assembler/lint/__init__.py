@@ -15,6 +15,11 @@ RA502  warning   gripper with fingers but no left/right_fingerpad geoms declared
 RA503  warning   important geom that cannot collide
 RA504  warning   part with no visual geoms (invisible to robosuite's cameras)
 RA601  error     home keyframe outside a joint's range
+RA701  warning   position servos robosuite's controllers would drive, robosuite.actuation unset
+       error     (or robosuite.actuation torque and a servo without forcerange)
+RA702  info      gripper without robosuite's eef body / grip sites (robosuite gets them at eef_body)
+RA703  warning   gripper with actuators but no actions: (robosuite refuses it)
+RA704  warning   arm without the {arm}_center site robosuite's composite controller reads
 =====  ========  ===================================================================
 
 Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
@@ -35,6 +40,8 @@ from assembler.lint.important_names import (
 from assembler.lint.keyframe import keyframe_outside_limits
 from assembler.lint.mass import degenerate_inertia, implausible_density, oversized_inertia
 from assembler.lint.penetration import self_penetration
+from assembler.lint.robosuite_grippers import grip_frames_added_for_robosuite, gripper_without_actions
+from assembler.lint.robosuite_robots import missing_arm_centers, servos_robosuite_cannot_drive
 from assembler.lint.target import LintTarget, part_target, robot_target
 from assembler.lint.visibility import invisible_parts
 
@@ -53,6 +60,10 @@ CHECKS: tuple[Check, ...] = (
     important_geoms_without_contact,
     invisible_parts,
     keyframe_outside_limits,
+    servos_robosuite_cannot_drive,
+    grip_frames_added_for_robosuite,
+    gripper_without_actions,
+    missing_arm_centers,
 )
 """Every check, in the order of their codes."""
 

@@ -23,6 +23,9 @@ from assembler.writing import copy_atomically, make_folder, undone_on_failure, w
 XML_SIGNIFICANT_DIGITS = 15
 """Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""
 
+EXACT_DIGITS = 17
+"""Digits that give every double back exactly (what robosuite must read to rebuild our model bit for bit)."""
+
 
 @functools.lru_cache(maxsize=1)
 def _mujoco_library() -> ctypes.CDLL | None:
@@ -57,9 +60,9 @@ def _xml_precision(digits: int) -> Iterator[None]:
         setter(ctypes.c_int(previous))
 
 
-def to_xml(spec: mujoco.MjSpec) -> str:
+def to_xml(spec: mujoco.MjSpec, digits: int = XML_SIGNIFICANT_DIGITS) -> str:
     """The spec as MJCF text, with numbers precise enough to reload the same model."""
-    with _xml_precision(XML_SIGNIFICANT_DIGITS):
+    with _xml_precision(digits):
         return str(spec.to_xml())
 
 

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Sequence
 from typing import Any, ClassVar
 
 import numpy as np
 
-from assembler.errors import Problem
+from assembler.errors import AssemblerError, Problem
 from assembler.fieldpath import FieldPath
+from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
 from assembler.models.registering import Registry
@@ -52,6 +55,12 @@ class GripperModel(PartModel):
         for role, name in spec.important_sensors.items():
             check.sensor(FieldPath(("important_sensors", role)), name)
         check.body(FieldPath(("eef_body",)), spec.eef_body)
+        if spec.actions is not None:
+            for number, action in enumerate(spec.actions.dimensions):
+                for index, name in enumerate(action.actuators):
+                    check.actuator(FieldPath(("actions", "dimensions", number, "actuators", index)), name)
+            for name in spec.actions.hold:
+                check.actuator(FieldPath(("actions", "hold", name)), name)
         return [*super()._name_problems(prepared), *check.problems]
 
     @property
@@ -61,8 +70,31 @@ class GripperModel(PartModel):
 
     @property
     def dof(self) -> int:
-        """Number of actions the gripper takes (the spec's, or its number of actuators)."""
+        """Number of actions the gripper takes: its declared actions', the spec's ``dof``, or its
+        number of actuators."""
+        if self.spec.actions is not None:
+            return len(self.spec.actions.dimensions)
         return self.spec.dof if self.spec.dof is not None else len(self.actuators)
+
+    @functools.cached_property
+    def action_map(self) -> ActionMap | None:
+        """How actions drive the actuators, from the spec's ``actions``; None when it declares none."""
+        if self.spec.actions is None:
+            return None
+        names = [actuator.name for actuator in self.prepared_mjspec.actuators]
+        return ActionMap.of(self.spec.actions, names, self.spec.speed)
+
+    def format_action(self, action: Sequence[float]) -> FloatArray:
+        """One output in [-1, 1] per actuator (in MJCF order) for a policy's ``action`` (``dof``
+        values), moving ``current_action`` as robosuite's grippers do."""
+        action_map = self.action_map
+        if action_map is None:
+            raise AssemblerError(
+                f"{self.describe()} declares no actions: add an 'actions:' block saying which actuators "
+                "each action drives and in which direction"
+            )
+        outputs, self.current_action = action_map.format_action(action, self.current_action)
+        return outputs
 
     @property
     def speed(self) -> float:

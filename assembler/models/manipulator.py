@@ -119,7 +119,7 @@ class ManipulatorModel(RobotModel):
 
     # ----- groups -------------------------------------------------------------------------
 
-    def _robot_group(self, joint: str) -> str:
+    def group_of(self, joint: str) -> str:
         """torso, head, legs, base, right or left for one of the robot's own joints."""
         declared = self.spec.joint_groups
         if declared is not None:
@@ -135,14 +135,15 @@ class ManipulatorModel(RobotModel):
     def _joint_groups(self) -> dict[str, list[str]]:
         groups: dict[str, list[str]] = {g: [] for g in ("torso", "head", "legs", "base", "right", "left")}
         for joint in self.joint_names:
-            groups.setdefault(self._robot_group(joint), []).append(self.naming_prefix + joint)
+            groups.setdefault(self.group_of(joint), []).append(self.naming_prefix + joint)
         base = self.base
         if base is not None:
             for joint, prefixed in zip(base.joint_names, base.joints, strict=True):
                 groups.setdefault(base.group_of(joint), []).append(prefixed)
         return groups
 
-    def _actuator_groups(self) -> dict[str, list[str]]:
+    def actuator_groups(self) -> dict[str, list[str]]:
+        """Group (torso, head, legs, base, right, left) -> the actuators (prefixed) driving its joints."""
         by_joint = {joint: group for group, joints in self._joint_groups().items() for joint in joints}
         groups: dict[str, list[str]] = {g: [] for g in ("torso", "head", "legs", "base", "right", "left")}
         parts: list[PartModel] = [self] + ([self.base] if self.base is not None else [])
@@ -169,7 +170,7 @@ class ManipulatorModel(RobotModel):
     @property
     def arm_actuators(self) -> PerArm:
         """Arm actuators in order; ``arm_actuators["right"]`` for one arm."""
-        groups = self._actuator_groups()
+        groups = self.actuator_groups()
         return PerArm({arm: groups[arm] for arm in self.arms})
 
     @property
@@ -195,22 +196,22 @@ class ManipulatorModel(RobotModel):
     @property
     def torso_actuators(self) -> list[str]:
         """Actuators driving torso joints."""
-        return self._actuator_groups()["torso"]
+        return self.actuator_groups()["torso"]
 
     @property
     def head_actuators(self) -> list[str]:
         """Actuators driving head joints."""
-        return self._actuator_groups()["head"]
+        return self.actuator_groups()["head"]
 
     @property
     def legs_actuators(self) -> list[str]:
         """Actuators driving leg joints."""
-        return self._actuator_groups()["legs"]
+        return self.actuator_groups()["legs"]
 
     @property
     def base_actuators(self) -> list[str]:
         """Actuators moving the whole robot."""
-        return self._actuator_groups()["base"]
+        return self.actuator_groups()["base"]
 
 
 class LeggedManipulatorModel(ManipulatorModel):

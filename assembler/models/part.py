@@ -63,15 +63,17 @@ class PartModel(metaclass=RegisteringMeta):
 
     # ----- the spec and its problems ----------------------------------------------------------
 
-    def locate(self, path: FieldPath) -> Location:
+    @classmethod
+    def locate(cls, path: FieldPath) -> Location:
         """The spec position of a field, for error messages."""
-        if self.loaded is not None:
-            return self.loaded.location(path)
-        return Location(f"<class {type(self).__qualname__}>")
+        if cls.loaded is not None:
+            return cls.loaded.location(path)
+        return Location(f"<class {cls.__qualname__}>")
 
-    def spec_problem(self, path: FieldPath, message: str) -> Problem:
+    @classmethod
+    def spec_problem(cls, path: FieldPath, message: str) -> Problem:
         """A problem located at a field of this part's spec."""
-        return Problem(message, self.locate(path), FieldPath(path) or None)
+        return Problem(message, cls.locate(path), FieldPath(path) or None)
 
     def _load_source(self) -> MjcfSource:
         field = FieldPath((self.spec.source_field,))

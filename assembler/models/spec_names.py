@@ -1,5 +1,5 @@
 """Names a part's spec gives that must exist in its MJCF: bodies, joints (names or globs), sites,
-geoms, sensors. Each miss is one problem at the spec field, with the closest name that exists.
+geoms, sensors, actuators. Each miss is one problem at the spec field, with the closest name that exists.
 
 The checks read the parsed MJCF (no compile), so ``assembler validate`` reports them all at once.
 """
@@ -47,6 +47,10 @@ class NameCheck:
     def sensor(self, path: FieldPath, name: str) -> None:
         """``name`` must be a sensor of the MJCF."""
         self._element(path, name, "sensor", (s.name for s in self.mjspec.sensors))
+
+    def actuator(self, path: FieldPath, name: str) -> None:
+        """``name`` must be an actuator of the MJCF."""
+        self._element(path, name, "actuator", (a.name for a in self.mjspec.actuators))
 
     def joint_patterns(self, path: FieldPath, patterns: Sequence[str]) -> None:
         """Each name or glob in ``patterns`` (a list at ``path``) must match a joint."""

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from assembler.schema.common import NonNegativeFloat
+from assembler.schema.gripper_actions import GripperActions
 from assembler.schema.parts import PartSpec
 
 
@@ -28,10 +29,15 @@ class GripperSpec(PartSpec):
     """The body at the grip point, whose frame defines the gripper's rotation offset."""
 
     dof: int | None = Field(default=None, ge=0)
-    """Number of actions the gripper takes; null counts its actuators."""
+    """Number of actions the gripper takes; null: the number of ``actions`` (or of actuators without them)."""
+
+    actions: GripperActions | None = None
+    """How a policy's actions drive the actuators (robosuite's format_action); null: none declared, which
+    robosuite refuses for a gripper with actuators (lint RA703)."""
 
     speed: NonNegativeFloat = 0.0
-    """How fast an action moves the fingers (robosuite's per-step increment)."""
+    """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
+    speed)."""
 
     important_sites: dict[str, str] = Field(default_factory=_default_sites)
     """Role -> site name; every site must exist in the MJCF."""
@@ -41,3 +47,11 @@ class GripperSpec(PartSpec):
 
     important_sensors: dict[str, str] = Field(default_factory=_default_sensors)
     """Role -> sensor name; every sensor must exist in the MJCF."""
+
+    @model_validator(mode="after")
+    def _dof_matches_actions(self) -> GripperSpec:
+        if self.actions is not None and self.dof is not None and self.dof != len(self.actions.dimensions):
+            raise ValueError(
+                f"dof is {self.dof} but actions declares {len(self.actions.dimensions)}; drop dof"
+            )
+        return self

@@ -16,6 +16,7 @@ from assembler.schema.expressions import (
 )
 from assembler.schema.joints import JointDefaults
 from assembler.schema.parts import Name, PartSpec
+from assembler.schema.robosuite import RobosuiteOptions
 
 Morphology = Literal["manipulator", "legged_manipulator", "humanoid", "humanoid_upper_body"]
 Arm = Literal["right", "left"]
@@ -119,8 +120,14 @@ class RobotSpec(PartSpec):
     default_controller_config: dict[str, str] = Field(default_factory=dict)
     """Controller config name per body part (e.g. right: default_panda), for controller libraries."""
 
+    robosuite: RobosuiteOptions = Field(default_factory=RobosuiteOptions)
+    """How the robot enters robosuite's environments (docs/robosuite.md); every field has a default by
+    arms, base and morphology."""
+
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
-    """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length."""
+    """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length.
+    In robosuite's environments an arena left out takes robosuite's value for the arm type (Panda's for
+    one arm, Baxter's for two)."""
 
     top_offset: Vec3 = (0.0, 0.0, 1.0)
     """Offset from the robot's root to its top, in metres (robosuite's placeholder is 0, 0, 1)."""

@@ -62,8 +62,8 @@ def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None
             equality.type = mujoco.mjtEq.mjEQ_JOINT
             equality.objtype = mujoco.mjtObj.mjOBJ_JOINT
             equality.name1, equality.name2 = mimic.follower, mimic.leader
-        data = [0.0] * len(equality.data)
-        data[0], data[1] = mimic.offset, mimic.multiplier  # polycoef: q1 = c0 + c1 * q2 + ...
+        data = list(equality.data)  # past the polynomial, MuJoCo's defaults (as an XML <joint> gets them)
+        data[:5] = [mimic.offset, mimic.multiplier, 0.0, 0.0, 0.0]  # polycoef: q1 = c0 + c1 * q2 + ...
         equality.data = data
     if problems:
         raise MjcfError(problems)

@@ -1,0 +1,63 @@
+"""``python -m assembler.robosuite``: run a script with spec robots in robosuite, or (un)install the
+start-up hook that does it for every script while ``ASSEMBLER_ROBOSUITE_SPECS`` or
+``ASSEMBLER_ROBOSUITE_EXPERIMENT`` is set.
+
+    python -m assembler.robosuite train.py --lr 3e-4   # train.py sees the spec robots
+    python -m assembler.robosuite --install-hook        # every script, while a variable is set
+    python -m assembler.robosuite --remove-hook
+"""
+
+from __future__ import annotations
+
+import runpy
+import sys
+import sysconfig
+from pathlib import Path
+
+import assembler.robosuite  # noqa: F401  (registers the spec robots, as the package's __init__ has)
+from assembler.cli.endings import end_cleanly
+from assembler.robosuite_hook import PTH_LINE
+from assembler.writing import write_atomically
+
+PTH_NAME = "assembler-robosuite.pth"
+
+
+def hook_path() -> Path:
+    """Where the ``.pth`` file goes: this environment's site-packages."""
+    return Path(sysconfig.get_paths()["purelib"]) / PTH_NAME
+
+
+def setup(argv: list[str]) -> int:
+    """Handle the options; for a script, register (every problem as one line) and return -1."""
+    if not argv or argv[0] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if argv else 2
+    if argv[0] == "--install-hook":
+        write_atomically(hook_path(), PTH_LINE)
+        print(
+            f"wrote {hook_path()}: scripts register spec robots with robosuite while "
+            "ASSEMBLER_ROBOSUITE_SPECS "
+            "or ASSEMBLER_ROBOSUITE_EXPERIMENT is set"
+        )
+        return 0
+    if argv[0] == "--remove-hook":
+        hook_path().unlink(missing_ok=True)
+        print(f"removed {hook_path()}")
+        return 0
+    return -1  # importing this package registered the specs, with the variables' folders and experiment
+
+
+def main(argv: list[str]) -> int:
+    """Set up, then run the script as ``python script.py`` would (its errors are its own)."""
+    code = end_cleanly(lambda: setup(argv))
+    if code != -1:
+        return code
+    script = argv[0]
+    sys.argv = list(argv)
+    sys.path.insert(0, str(Path(script).resolve().parent))
+    runpy.run_path(script, run_name="__main__")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,86 @@
+"""Spec folders and experiment files named outside the code, for training scripts nobody edits.
+
+A script that only calls ``robosuite.make`` can still get spec robots: name spec folders in
+``ASSEMBLER_ROBOSUITE_SPECS`` (separated like ``PATH``) or an experiment file in
+``ASSEMBLER_ROBOSUITE_EXPERIMENT``, and either run the script with
+``python -m assembler.robosuite script.py ...`` or install the start-up hook once
+(``python -m assembler.robosuite --install-hook``), which registers them when the process imports
+robosuite, and costs nothing in processes that never do.
+
+An experiment file's robots enter robosuite under their names with the experiment's overrides,
+base and grippers as their defaults: the robosuite class of that name is the experiment's robot.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from pathlib import Path
+
+from assembler.assembly import DEFAULT
+from assembler.catalog import register_specs, with_overrides
+from assembler.errors import AssemblerWarning, RegistryError
+from assembler.experiment import build_experiment, read_experiment
+from assembler.models import ManipulatorModel, PartModel
+from assembler.robosuite.registries import install, offered
+
+SPECS_VARIABLE = "ASSEMBLER_ROBOSUITE_SPECS"
+EXPERIMENT_VARIABLE = "ASSEMBLER_ROBOSUITE_EXPERIMENT"
+
+
+def register(*paths: str | Path, replace_robosuite: bool = False) -> list[str]:
+    """Register the specs in ``paths`` (files and folders) with the assembler and robosuite: all or
+    none. A name robosuite uses itself is an error unless ``replace_robosuite``; returns the names."""
+    classes = register_specs(*paths)
+    return install([cls for cls in classes if offered(cls)], replace=replace_robosuite)
+
+
+def experiment_robots(path: str | Path) -> list[type[ManipulatorModel]]:
+    """The robots of an experiment file, each a class with the experiment's overrides and parts; every
+    problem of the file at once, at its line."""
+    loaded = read_experiment(path)
+    built = build_experiment(loaded)
+    classes: dict[str, type[ManipulatorModel]] = {}
+    for index, (entry, robot) in enumerate(zip(loaded.spec.robots, built.robots, strict=True)):
+        parts: dict[str, object] = {}
+        if entry.base != DEFAULT:
+            parts["default_base"] = entry.base
+        for arm, gripper in entry.grippers.items():
+            parts[f"default_grippers.{arm}"] = gripper
+        label = f"{path}: robots[{index}]."
+        cls = with_overrides(type(robot), parts, label) if parts else type(robot)
+        if {"pos", "ori"} & entry.model_fields_set:
+            message = (
+                f"{label} pos and ori are not used in robosuite: its environments place each robot themselves"
+            )
+            warnings.warn(message, AssemblerWarning, stacklevel=2)
+        name = cls.__name__
+        if name in classes and classes[name].spec != cls.spec:
+            raise RegistryError(
+                f"{label} robot {name} appears twice with different settings; robosuite has one {name}"
+            )
+        if not isinstance(robot, ManipulatorModel):
+            raise RegistryError(
+                f"{label} robot {name} has no arms; robosuite's environments take robots with arms"
+            )
+        classes[name] = cls  # type: ignore[assignment]
+    return list(classes.values())
+
+
+def register_experiment(path: str | Path) -> list[str]:
+    """Register an experiment file's robots with robosuite: the file is the user's explicit choice, so
+    each replaces the class robosuite had under its name (robosuite's own is logged as replaced)."""
+    robots: list[type[PartModel]] = list(experiment_robots(path))
+    return install(robots, replace=True, replace_ours=True)
+
+
+def register_from_environment() -> list[str]:
+    """Register what ``ASSEMBLER_ROBOSUITE_SPECS`` and ``ASSEMBLER_ROBOSUITE_EXPERIMENT`` name."""
+    names: list[str] = []
+    folders = [folder for folder in os.environ.get(SPECS_VARIABLE, "").split(os.pathsep) if folder]
+    if folders:
+        names += register(*folders)
+    experiment = os.environ.get(EXPERIMENT_VARIABLE)
+    if experiment:
+        names += register_experiment(experiment)
+    return names

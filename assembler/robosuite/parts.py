@@ -1,0 +1,156 @@
+"""Our parts as robosuite's environments see them, and the MJCF files robosuite reads for them.
+
+robosuite lists each part's elements by name from the file it reads, and the environment looks every
+listed name up in the compiled world. So the file robosuite reads for a gripper or base and the
+assembly our robot builds must name every element alike: each part class has a robosuite variant (an
+unregistered subclass) whose part spec gives unnamed geoms robosuite's names and, for a robot whose
+spec says ``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
+text is the lossless emission, made once per build inputs in a process: every hard reset of an
+environment rebuilds every model, and the text of an unchanged part does not change.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import Any, TypeVar
+
+import mujoco
+
+from assembler.errors import AssemblerWarning, SpecError
+from assembler.fieldpath import FieldPath
+from assembler.mjcf.inertia_groups import weighed_by_other_groups
+from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
+from assembler.robosuite.actuation import has_force_range, motorize, position_servos
+from assembler.robosuite.arm_centers import add_arm_centers
+from assembler.robosuite.files import written_file
+from assembler.robosuite.geom_names import name_geoms_as_robosuite
+from assembler.robosuite.grip_frames import add_grip_frames
+from assembler.robosuite.lossless import lossless_xml
+from assembler.robosuite_terms import DRIVEN_GROUPS, robot_type_name
+
+P = TypeVar("P", bound=PartModel)
+
+ACTUATION = FieldPath(("robosuite", "actuation"))
+JOINT_GROUPS = FieldPath(("joint_groups",))
+
+ROBOSUITE_INERTIA_GROUPS = (0, 0)
+"""The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias."""
+
+_variants: dict[type[Any], type[Any]] = {}
+_texts: dict[Any, str] = {}
+
+
+def robosuite_variant(cls: type[P]) -> type[P]:
+    """``cls`` as robosuite sees it (made once per class, never registered)."""
+    variant = _variants.get(cls)
+    if variant is None:
+
+        def part_mjspec(self: PartModel) -> mujoco.MjSpec:
+            mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
+            if isinstance(self, ManipulatorModel):
+                drive_as_declared(self, mjspec)
+                add_arm_centers(self, mjspec)
+            if isinstance(self, GripperModel):
+                add_grip_frames(self, mjspec)
+            return mjspec
+
+        namespace = {
+            "in_registry": False,
+            "part_mjspec": part_mjspec,
+            "__module__": __name__,
+            "__doc__": f"{cls.__name__} as robosuite's environments see it.",
+        }
+        variant = type(cls.__name__, (cls,), namespace)
+        _variants[cls] = variant
+    return variant
+
+
+def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
+    """Apply the spec's ``robosuite.actuation`` to ``mjspec``, the robot's part spec (unprefixed)."""
+    undriven = undriven_joints(robot, mjspec)
+    if undriven:
+        raise SpecError(
+            robot.spec_problem(
+                JOINT_GROUPS,
+                f"robosuite's controllers drive each joint of the groups they control with one actuator, "
+                f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none "
+                "(a mimic follower?): declare an actuator for each, "
+                "or set robosuite.enabled: false for a robot robosuite cannot drive",
+            )
+        )
+    servos = position_servos(mjspec, driven_actuators(robot))
+    choice = robot.spec.robosuite.actuation
+    names = ", ".join(servo.name for servo in servos)
+    if servos and choice is None:
+        raise SpecError(
+            robot.spec_problem(
+                ACTUATION,
+                f"the actuators {names} are position servos, but robosuite's controllers write torques into "
+                "them: set robosuite.actuation to torque (each becomes a motor with the servo's forcerange "
+                "as its ctrlrange) or to as_is (keep the servos)",
+            )
+        )
+    if choice == "torque":
+        unbounded = [servo.name for servo in servos if not has_force_range(servo)]
+        if unbounded:
+            raise SpecError(
+                robot.spec_problem(
+                    ACTUATION,
+                    f"robosuite.actuation is torque, but the position servos {', '.join(unbounded)} have "
+                    "no forcerange to become the motor's ctrlrange; give each a forcerange in the MJCF",
+                )
+            )
+        motorize(servos)
+
+
+def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
+    """The robot's own joints (unprefixed) in groups robosuite's controllers drive that no actuator of
+    ``mjspec`` (the robot's part spec) drives."""
+    targets = {actuator.target for actuator in mjspec.actuators}
+    driven = DRIVEN_GROUPS[robot_type_name(type(robot))]
+    return [j for j in robot.joint_names if robot.group_of(j) in driven and j not in targets]
+
+
+def driven_actuators(robot: ManipulatorModel) -> set[str]:
+    """The robot's own actuators (unprefixed) that robosuite's controllers write torques into."""
+    groups = robot.actuator_groups()
+    names = [name for group in DRIVEN_GROUPS[robot_type_name(type(robot))] for name in groups.get(group, [])]
+    return {name[len(robot.naming_prefix) :] for name in names if name.startswith(robot.naming_prefix)}
+
+
+def _memo(key: Any, cacheable: bool, emit: Any) -> str:
+    """The file of ``emit()``'s text, the text made once per ``key`` in this process."""
+    if not cacheable:
+        return written_file(emit())
+    text = _texts.get(key)
+    if text is None:
+        text = _texts[key] = emit()
+    return written_file(text)
+
+
+def part_file(part: PartModel) -> str:
+    """The file robosuite reads for ``part`` alone (unprefixed: robosuite prefixes it)."""
+    inputs = part.part_inputs()
+    return _memo(("part", inputs), inputs.spec_made, lambda: lossless_xml(part.part_mjspec()))
+
+
+def assembly_file(robot: RobotModel) -> str:
+    """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly)."""
+    inputs = robot.build_inputs()
+    return _memo(("assembly", inputs), inputs.cacheable, lambda: lossless_xml(_world_checked(robot)))
+
+
+def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
+    """The robot's assembly, said once where robosuite's world will weigh some body differently."""
+    mjspec = robot.build_mjspec()
+    bodies = weighed_by_other_groups(mjspec, ROBOSUITE_INERTIA_GROUPS)
+    if bodies:
+        shown = ", ".join(bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4 else "")
+        warnings.warn(
+            f"{type(robot).__name__}: robosuite's world counts only group-0 geoms in inferred masses "
+            f'(<compiler inertiagrouprange="0 0">), so {shown} weigh less there than in the assembled '
+            "model; give those bodies an <inertial> to make them agree",
+            AssemblerWarning,
+            stacklevel=2,
+        )
+    return mjspec

@@ -1,0 +1,52 @@
+"""Where robosuite's environments put a spec robot: its ``base_xpos_offset`` per arena.
+
+robosuite's environments read ``base_xpos_offset["table"]`` (a function of the table length, called
+positionally), ``["bins"]`` and ``["empty"]`` (three numbers each) with no fallback, so a robot
+without an entry fails inside the environment with ``KeyError: 'table'``. A spec gives its own
+offsets; an arena it leaves out gets the value robosuite gives its own robots of the same arm type:
+Panda's (shared by all of robosuite's single arms) or Baxter's (its bimanual robot).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from assembler.schema.expressions import evaluate_expression
+
+OffsetValue = float | str
+
+DEFAULT_OFFSETS: dict[str, dict[str, tuple[OffsetValue, OffsetValue, OffsetValue]]] = {
+    "single": {
+        "bins": (-0.5, -0.1, 0.0),
+        "empty": (-0.6, 0.0, 0.0),
+        "table": ("-0.16 - table_length / 2", 0.0, 0.0),
+    },
+    "bimanual": {
+        "bins": (-0.5, -0.1, 0.0),
+        "empty": (-0.29, 0.0, 0.0),
+        "table": ("-0.26 - table_length / 2", 0.0, 0.0),
+    },
+}
+"""robosuite's offsets for its own robots by arm type (panda_robot.py, baxter_robot.py)."""
+
+
+def offsets(spec: Any) -> dict[str, Any]:
+    """Per arena, the offset in the shape robosuite reads: the spec's, else robosuite's default for the
+    spec's arm type."""
+    defaults = DEFAULT_OFFSETS.get(str(spec.arm_type), {})
+    arenas = {**defaults, **spec.base_xpos_offset}
+    return {arena: _for_robosuite(spec, arena, arena not in spec.base_xpos_offset) for arena in arenas}
+
+
+def _for_robosuite(spec: Any, arena: str, default: bool) -> Any:
+    """One arena's offset: ``table``'s a function of the table length, every other three numbers."""
+
+    def resolve(**variables: float) -> tuple[float, float, float]:
+        if not default:
+            return spec.resolve_base_xpos_offset(arena, **variables)  # type: ignore[no-any-return]
+        x, y, z = (evaluate_expression(v, variables) for v in DEFAULT_OFFSETS[str(spec.arm_type)][arena])
+        return (x, y, z)
+
+    if arena == "table":
+        return lambda table_length: resolve(table_length=table_length)
+    return resolve()
