@@ -208,10 +208,12 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     return str(confine(path, spec_homes(home), ""))
 
 
-def _is_file(path: Path) -> bool:
+def is_file(path: str | Path) -> bool:
+    """Whether ``path`` is a file; a name too long for the file system or holding a NUL is no file
+    (``Path.is_file`` raises for those, and they come from users' specs and command lines)."""
     try:
-        return path.is_file()
-    except (OSError, ValueError):  # a name too long for the file system, a NUL byte
+        return Path(path).is_file()
+    except (OSError, ValueError):
         return False
 
 
@@ -233,12 +235,12 @@ def locate_model_file(reference: str) -> Path:
                 package,
             )
         path = root / inner
-        if _is_file(path):
+        if is_file(path):
             path = confine(path, [root], f"{reference}: ", MjcfError)
     else:
         path = Path(reference)
-        if _is_file(path):  # admitted when its spec was loaded, unless it appeared only since
+        if is_file(path):  # admitted when its spec was loaded, unless it appeared only since
             path = confine(path, homes_of(path.resolve()), "", MjcfError)
-    if not _is_file(path):
+    if not is_file(path):
         raise MjcfError(f"MJCF file not found: {display_path(path)}")
     return path

@@ -23,12 +23,12 @@ from assembler.cache.repeat import Origin, Request, record
 from assembler.catalog import add_spec_folders, register_specs
 from assembler.documents import SPEC_SUFFIXES, Overrides
 from assembler.models import REGISTRIES, PartModel, RobotModel
-from assembler.paths import shipped_specs_dir
+from assembler.paths import is_file, shipped_specs_dir
 
 
 def is_spec_file(reference: str) -> bool:
     """True when a robot reference is a spec file rather than a registered name."""
-    return reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file()
+    return reference.endswith(SPEC_SUFFIXES) or is_file(reference)
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:

@@ -75,6 +75,8 @@ CASES = [
     # what MuJoCo itself refuses is reported, not crashed on
     pytest.param(b"name: Arm\nmjcf: negative_mass.xml\n", ["{spec}:2:7: mjcf: {folder}/negative_mass.xml:23: MuJoCo refuses it: mass, inertia or density are negative in geom (element 'link2_col'); correct the file (a spec can declare a repair: mjcf_fixes)"], id="negative-mass-in-mjcf"),
     pytest.param(b"name: Arm\nmjcf: missing.xml\n", ["{spec}:2:7: mjcf: MJCF file not found: {folder}/missing.xml"], id="missing-mjcf"),
+    # paths the file system refuses (found by the 10,000-case fuzz run: a traceback before)
+    pytest.param(ARM + b"extends: " + b"x" * 300 + b".yaml\n", ["{spec}:3:10: extends: parent spec file not found: {folder}/" + "x" * 300 + ".yaml"], id="parent-file-name-too-long"),
 ]
 # fmt: on
 
@@ -104,6 +106,14 @@ def test_bad_input_gets_its_exact_message_and_writes_nothing(
     )
     assert captured.out == ""
     assert not out.exists()
+
+
+def test_a_robot_name_too_long_for_a_file_name_is_an_unknown_robot(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    assert main(["build", "x" * 300]) == 1
+    (line,) = capsys.readouterr().err.splitlines()
+    assert line.startswith(f"unknown robot '{'x' * 300}'")
 
 
 def test_a_byte_order_mark_and_windows_line_endings_just_work(

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
-from pathlib import Path
 
 from assembler.assembly import DEFAULT, assemble, create_robot
 from assembler.catalog import register_specs
@@ -13,12 +12,13 @@ from assembler.documents import SPEC_SUFFIXES, Override, parse_overrides
 from assembler.effects import overrides_without_effect
 from assembler.errors import AssemblerError
 from assembler.models import RobotModel
+from assembler.paths import is_file
 from assembler.registry import robot_class
 
 
 def robot_name(reference: str) -> str:
     """A registered robot name, registering the spec first when given a spec file path."""
-    if reference.endswith(SPEC_SUFFIXES) or Path(reference).is_file():
+    if reference.endswith(SPEC_SUFFIXES) or is_file(reference):
         registered = register_specs(reference)
         if not registered:  # a folder named like a spec file
             raise AssemblerError(f"{reference}: no spec in it; give a spec file or a robot name")

@@ -13,15 +13,15 @@ from typing import Any
 
 from assembler.cache.repeat import answered_xml
 from assembler.mjcf.emit import bundle_xml
-from assembler.paths import allowing, display_path
+from assembler.paths import allowing, display_path, is_file
 from assembler.writing import write_atomically
 
 
 def robot_file(args: argparse.Namespace) -> Path | None:
     """The robot's spec file, when the command names one rather than a registered robot."""
     reference: str = args.robot
-    is_file = reference.endswith((".yaml", ".yml")) or Path(reference).is_file()
-    return Path(reference).resolve() if is_file else None
+    spec_file = reference.endswith((".yaml", ".yml")) or is_file(reference)
+    return Path(reference).resolve() if spec_file else None
 
 
 def build_request(args: argparse.Namespace) -> dict[str, Any] | None:

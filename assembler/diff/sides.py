@@ -20,7 +20,7 @@ from assembler.documents import SPEC_SUFFIXES
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
 from assembler.loader import load_paths
 from assembler.models import PartModel, RobotModel
-from assembler.paths import display_path
+from assembler.paths import display_path, is_file
 from assembler.registry import find_registered, registered_names
 from assembler.schema import PartSpec
 
@@ -67,7 +67,7 @@ def load_side(reference: str) -> Side:
     if revision is not None:
         return Side(reference, class_from_spec(load_at_revision(*revision), register=False))
     path = Path(reference)
-    if path.is_file():
+    if is_file(path):
         (loaded,) = load_paths([path], PARENTS)
         return Side(reference, class_from_spec(loaded, register=False))
     if reference.endswith(SPEC_SUFFIXES) or path.is_dir():

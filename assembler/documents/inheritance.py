@@ -16,7 +16,7 @@ from typing import Any, Protocol
 from assembler.documents.located import LocatedDocument
 from assembler.errors import Location, Problem, SpecError, did_you_mean, summarize_names
 from assembler.fieldpath import TOP, FieldPath
-from assembler.paths import display_path, resolve_model_path
+from assembler.paths import display_path, is_file, resolve_model_path
 
 SPEC_SUFFIXES = (".yaml", ".yml")
 
@@ -155,7 +155,7 @@ class Resolver:
                 path = Path(resolve_model_path(reference, child.folder))
             except SpecError as error:  # a parent file outside the allowed folders
                 raise SpecError([Problem(p.message, where, EXTENDS) for p in error.problems]) from None
-            if not path.is_file():
+            if not is_file(path):
                 raise SpecError(Problem(f"parent spec file not found: {display_path(path)}", where, EXTENDS))
             return self.read(path)
         if reference in self.batch:

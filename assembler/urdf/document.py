@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
-from assembler.paths import confine, display_path
+from assembler.paths import confine, display_path, is_file
 from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 
@@ -135,7 +135,7 @@ class _Reader:
             name = written.removeprefix("file://")
             file = Path(name) if os.path.isabs(name) else self.path.parent / directory / name
             homes = list(self.homes)
-            if not file.is_file():
+            if not is_file(file):
                 self.problem(line, f"mesh file not found: {display_path(file)}")
                 return None
         try:

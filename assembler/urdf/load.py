@@ -28,6 +28,7 @@ from assembler.paths import (
     confine,
     display_path,
     homes_of,
+    is_file,
     locate_model_file,
     package_root,
 )
@@ -52,7 +53,7 @@ DYNAMICS_ATTRIBUTES: dict[str, str] = {"damping": "damping", "friction": "fricti
 def _python_package_file(reference: str) -> Path | None:
     name, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
     root = package_root(name) if name.isidentifier() else None
-    if root is None or not (root / inner).is_file():
+    if root is None or not is_file(root / inner):
         return None
     return locate_model_file(reference)
 

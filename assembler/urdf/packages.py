@@ -25,6 +25,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from assembler.extras import install_command
+from assembler.paths import is_file
 
 PACKAGE_SCHEME = "package://"
 
@@ -98,7 +99,7 @@ def find_package_file(uri: str, urdf: Path | None = None) -> tuple[Path, Path] |
     name, inner = parts
     for folder in package_folders(name, urdf):
         candidate = folder / inner
-        if candidate.is_file():
+        if is_file(candidate):
             return candidate, folder
     return None
 
