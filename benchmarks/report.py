@@ -121,6 +121,15 @@ REASONS: dict[str, str] = {
         "class. First contact decodes the meshes like MuJoCo does and additionally starts the "
         "background process that stores them."
     ),
+    "2 warm": (
+        "`assembler.load_model` (the request-record path: no spec is read, the record's spec files are "
+        "checked by size and time, the entry by its XXH3 digest) is within 1.2x of the floor for most "
+        "robosuite robots; the misses are the small models (Jaco, Kinova3, SpotArm, XArm7, our own "
+        "primitive robots), whose floor is mostly Python and MuJoCo start-up, so the fixed ~55 ms of "
+        "our imports and checks weigh more. `assemble(name).get_model()` builds the spec layer "
+        "(pydantic, the schema, every shipped spec) before it asks the cache, hence 1.9-2.9x: use "
+        "`load_model` (or `assembler build`, which takes the same path) where start-up matters."
+    ),
     "5 variants": (
         "robosuite's `get_xml` is `ElementTree.tostring` of a tree it already holds: it compiles "
         "nothing. Every one of our variant files is compiled before it is written (a variant MuJoCo "
