@@ -12,7 +12,6 @@ works: Sparrow7 with its gripper lifts Lift's cube with robosuite's OSC_POSE con
 
 from __future__ import annotations
 
-import importlib.metadata
 from typing import Any
 
 import numpy as np
@@ -27,6 +26,7 @@ import assembler.robosuite  # noqa: E402, F401
 from assembler.errors import AssemblerWarning, SpecError  # noqa: E402
 from assembler.models import REGISTERED_ROBOTS  # noqa: E402
 from assembler.robosuite.robot_class import robot_class  # noqa: E402
+from assembler.urdf.packages import package_folders  # noqa: E402
 
 STEPS = 200
 SINGLE_ARM_ENVIRONMENTS = [env for env in robosuite.ALL_ENVIRONMENTS if not env.startswith("TwoArm")]
@@ -35,16 +35,8 @@ CASES = [(env, robot) for robot in ("Sparrow7", "Finch6") for env in SINGLE_ARM_
 CASES += [(env, "TwinTorso") for env in TWO_ARM_ENVIRONMENTS]
 
 
-def _has_example_robot_data() -> bool:
-    try:
-        importlib.metadata.distribution("example-robot-data")
-    except importlib.metadata.PackageNotFoundError:
-        return False
-    return True
-
-
 needs_urdf_robots = pytest.mark.skipif(
-    not _has_example_robot_data(), reason='needs example-robot-data: pip install ".[urdf]"'
+    not package_folders("example-robot-data"), reason='needs example-robot-data: pip install ".[urdf]"'
 )
 
 

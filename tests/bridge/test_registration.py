@@ -7,7 +7,6 @@ is mocked: robosuite is imported, its tables are read after our import, environm
 
 from __future__ import annotations
 
-import importlib.metadata
 import json
 import os
 import shutil
@@ -20,6 +19,8 @@ from typing import Any
 
 import pytest
 
+from assembler.urdf.packages import package_folders
+
 pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -27,15 +28,7 @@ VARIABLES = ("ASSEMBLER_ROBOSUITE_SPECS", "ASSEMBLER_ROBOSUITE_EXPERIMENT")
 RESULT = "RESULT "
 
 
-def _has_example_robot_data() -> bool:
-    try:
-        importlib.metadata.distribution("example-robot-data")
-    except importlib.metadata.PackageNotFoundError:
-        return False
-    return True
-
-
-URDF = _has_example_robot_data()
+URDF = bool(package_folders("example-robot-data"))
 
 ROBOT_TYPES = {
     "Sparrow7": "FixedBaseRobot",  # on Pedestal, a mount
