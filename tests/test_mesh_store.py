@@ -548,3 +548,33 @@ def test_with_the_cache_off_nothing_changes(tmp_path: Path, monkeypatch: pytest.
     with use_stored_meshes(spec := mesh_spec(files)) as swap:
         spec.compile()
     assert swap.store is None and swap.missing == [] and not (tmp_path / "cache").exists()
+
+
+def test_a_process_that_leaves_a_filler_at_work_exits_without_a_shutdown_warning(tmp_path: Path) -> None:
+    # The filler runs in its own session and outlives the process that started it, on purpose;
+    # Python used to print "ResourceWarning: subprocess N is still running" at that process's exit.
+    files = [write_obj(tmp_path / "sphere.obj"), write_stl(tmp_path / "sphere.stl")]
+    script = textwrap.dedent(
+        f"""
+        from assembler.cache.mesh_swap import use_stored_meshes
+        from tests.test_mesh_store import mesh_spec
+        with use_stored_meshes(spec := mesh_spec([Path(p) for p in {[str(f) for f in files]!r}])) as swap:
+            spec.compile()
+        assert len(swap.missing) == 2
+        """
+    )
+    environment = {**os.environ, "ASSEMBLER_CACHE_DIR": str(tmp_path / "cache")}
+    environment.pop("ASSEMBLER_NO_CACHE", None)
+    done = subprocess.run(
+        [sys.executable, "-W", "default", "-c", "from pathlib import Path\n" + script],
+        cwd=Path(__file__).resolve().parents[1],
+        env=environment,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert (done.returncode, done.stderr) == (0, "")
+    deadline = time.monotonic() + 60
+    while len(list((tmp_path / "cache" / "meshes").glob("*.msh"))) < 2 and time.monotonic() < deadline:
+        time.sleep(0.1)  # the filler finishes on its own
+    assert len(list((tmp_path / "cache" / "meshes").glob("*.msh"))) == 2

@@ -21,6 +21,7 @@ turn a model that compiles into an error (the error a user sees is the files' ow
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
 import subprocess
@@ -213,7 +214,17 @@ def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = Tr
         return  # no process to spare: the next compile decodes them again
     _handed.update((str(store.directory), mesh) for mesh in meshes)
     _fillers[:] = [process for process in _fillers if process.poll() is None]
+    if not _fillers:
+        atexit.register(_leave_fillers_running)
     _fillers.append(filler)
+
+
+def _leave_fillers_running() -> None:
+    """At exit, let the fillers still at work finish on their own (they run in their own session):
+    marked as ended here, so Python does not warn at shutdown that a subprocess is still running."""
+    for process in _fillers:
+        if process.poll() is None:
+            process.returncode = 0  # not waited for, on purpose
 
 
 _FILLER = (
