@@ -2,8 +2,8 @@
 
 ``assembler lint`` checks robots against robosuite's needs (RA701-RA704) where robosuite may not be
 installed, so it cannot import the bridge (:mod:`assembler.robosuite` imports robosuite first). The
-bridge reads its robot types and driven groups from here too; ``tests/test_lint.py`` checks that the
-grip frames and servos lint sees are the ones the bridge adds and converts.
+bridge reads its robot types, driven groups and actuators, grip frames and sensor roles from here too,
+so lint and bridge cannot disagree.
 """
 
 from __future__ import annotations
@@ -31,20 +31,28 @@ DRIVEN_GROUPS: dict[str, tuple[str, ...]] = {
 }
 """The joint groups each Robot class drives with controllers that write torques into ``ctrl``."""
 
+EEF = "eef"
+GRIP_SITE = "grip_site"
+GRIP_CYLINDER = "grip_site_cylinder"
+
 GRIP_FRAMES: tuple[tuple[mujoco.mjtObj, str], ...] = (
-    (mujoco.mjtObj.mjOBJ_BODY, "eef"),
-    (mujoco.mjtObj.mjOBJ_SITE, "grip_site"),
-    (mujoco.mjtObj.mjOBJ_SITE, "grip_site_cylinder"),
+    (mujoco.mjtObj.mjOBJ_BODY, EEF),
+    (mujoco.mjtObj.mjOBJ_SITE, GRIP_SITE),
+    (mujoco.mjtObj.mjOBJ_SITE, GRIP_CYLINDER),
 )
 """The body and sites robosuite looks a gripper up by (its GripperModel and its robots)."""
 
-GRIP_SENSOR_ROLES: tuple[str, ...] = ("force_ee", "torque_ee")
-"""The end-effector sensors robosuite's robots read at every step (``Robot.ee_force``/``ee_torque``)."""
+GRIP_SENSORS: dict[str, mujoco.mjtSensor] = {
+    "force_ee": mujoco.mjtSensor.mjSENS_FORCE,
+    "torque_ee": mujoco.mjtSensor.mjSENS_TORQUE,
+}
+"""The end-effector sensors robosuite's robots read at every step (``Robot.ee_force``/``ee_torque``),
+by role, with the sensor type of each."""
 
 
 def grip_sensors(important_sensors: dict[str, str]) -> list[tuple[mujoco.mjtObj, str]]:
     """The sensors robosuite reads of a gripper whose spec names ``important_sensors``."""
-    return [(mujoco.mjtObj.mjOBJ_SENSOR, important_sensors.get(role, role)) for role in GRIP_SENSOR_ROLES]
+    return [(mujoco.mjtObj.mjOBJ_SENSOR, important_sensors.get(role, role)) for role in GRIP_SENSORS]
 
 
 AFFINE = int(mujoco.mjtBias.mjBIAS_AFFINE)

@@ -13,11 +13,9 @@ import pytest
 import yaml
 
 import assembler.catalog  # noqa: F401  (registers the shipped specs)
-from assembler import robosuite_terms
 from assembler.cli import build_parser, main
 from assembler.cli.report import github_annotation
 from assembler.errors import Location
-from assembler.models import REGISTERED_ROBOTS, ManipulatorModel
 
 ROOT = Path(__file__).parent.parent
 Write = Callable[[str, str], Path]
@@ -342,25 +340,6 @@ def test_the_finger_gripper_with_pads_and_actions_is_clean(
     write("hand/finger.xml", FINGER_MJCF)
     assert main(["lint", str(write("hand/finger.yaml", FINGER_SPEC))]) == 0
     assert capsys.readouterr().out == "Finger: no findings\n"
-
-
-def test_lint_and_the_robosuite_bridge_agree_on_what_robosuite_drives_and_looks_up() -> None:
-    pytest.importorskip("robosuite")
-    from assembler.robosuite import grip_frames, parts  # the bridge imports robosuite
-
-    assert [name for _, name in robosuite_terms.GRIP_FRAMES] == [
-        grip_frames.EEF,
-        grip_frames.GRIP_SITE,
-        grip_frames.GRIP_CYLINDER,
-    ]
-    for name in ("Sparrow7", "TwinTorso", "Biped", "PandaOmron", "GR1", "SpotWithArm"):
-        cls = REGISTERED_ROBOTS.lookup(name)
-        assert issubclass(cls, ManipulatorModel)
-        robot = cls(idn=0)
-        ours = {
-            actuator.removeprefix(robot.naming_prefix) for actuator in robosuite_terms.driven_actuators(robot)
-        }
-        assert ours == parts.driven_actuators(robot), name
 
 
 def test_github_format_prints_annotations(capsys: pytest.CaptureFixture[str], write: Write) -> None:

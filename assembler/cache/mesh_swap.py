@@ -214,8 +214,6 @@ def store_meshes(meshes: Iterable[Mesh], store: MeshStore, background: bool = Tr
         return  # no process to spare: the next compile decodes them again
     _handed.update((str(store.directory), mesh) for mesh in meshes)
     _fillers[:] = [process for process in _fillers if process.poll() is None]
-    if not _fillers:
-        atexit.register(_leave_fillers_running)
     _fillers.append(filler)
 
 
@@ -225,6 +223,9 @@ def _leave_fillers_running() -> None:
     for process in _fillers:
         if process.poll() is None:
             process.returncode = 0  # not waited for, on purpose
+
+
+atexit.register(_leave_fillers_running)
 
 
 _FILLER = (

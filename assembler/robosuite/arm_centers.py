@@ -16,23 +16,24 @@ import mujoco
 
 from assembler.errors import AssemblerWarning
 from assembler.models import ManipulatorModel
+from assembler.robosuite_terms import arm_center_site
 
 
-def missing_arm_centers(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
-    """The ``{arm}_center`` sites ``mjspec`` (the robot's unprefixed part spec) lacks, per arm with joints."""
+def arms_without_center(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
+    """The arms (with joints) whose ``{arm}_center`` site ``mjspec``, the robot's part spec, lacks."""
     groups = robot.arm_joints
-    return [f"{arm}_center" for arm in robot.arms if groups[arm] and mjspec.site(f"{arm}_center") is None]
+    return [arm for arm in robot.arms if groups[arm] and mjspec.site(arm_center_site(arm)) is None]
 
 
 def add_arm_centers(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
     """Give ``mjspec`` robosuite's ``{arm}_center`` site for every arm that has none (see the module)."""
-    missing = missing_arm_centers(robot, mjspec)
-    for name in missing:
-        arm = name.removesuffix("_center")
+    arms = arms_without_center(robot, mjspec)
+    for arm in arms:
         first_joint = robot.arm_joints[arm][0].removeprefix(robot.naming_prefix)
         link = mjspec.joint(first_joint).parent
         mount = link.parent if link.parent.name != "world" else link
-        mount.add_site(name=name, size=[0.01, 0.01, 0.01], rgba=[1, 0.3, 0.3, 1], group=2)
+        mount.add_site(name=arm_center_site(arm), size=[0.01, 0.01, 0.01], rgba=[1, 0.3, 0.3, 1], group=2)
+    missing = [arm_center_site(arm) for arm in arms]
     if missing:
         warnings.warn(
             f"{robot.spec.name}: robosuite's arm controllers read the site{'s' if len(missing) > 1 else ''} "

@@ -19,22 +19,13 @@ import mujoco
 
 from assembler.errors import AssemblerWarning
 from assembler.models import GripperModel
-
-EEF = "eef"
-GRIP_SITE = "grip_site"
-GRIP_CYLINDER = "grip_site_cylinder"
-
+from assembler.robosuite_terms import EEF, GRIP_CYLINDER, GRIP_SENSORS, GRIP_SITE, grip_sensors
 
 FT_FRAME = "ft_frame"
-SENSORS: dict[str, mujoco.mjtSensor] = {
-    "force_ee": mujoco.mjtSensor.mjSENS_FORCE,
-    "torque_ee": mujoco.mjtSensor.mjSENS_TORQUE,
-}
-"""robosuite's sensor roles at the end effector, and the sensor type of each."""
 
 
 def _missing_sensors(gripper: GripperModel, mjspec: mujoco.MjSpec) -> list[str]:
-    names = (gripper.spec.important_sensors.get(role, role) for role in SENSORS)
+    names = (name for _, name in grip_sensors(gripper.spec.important_sensors))
     return [name for name in names if mjspec.sensor(name) is None]
 
 
@@ -88,7 +79,7 @@ def _add_sensors(gripper: GripperModel, mjspec: mujoco.MjSpec) -> None:
         mjspec.worldbody.first_body().add_site(
             name=FT_FRAME, size=[0.01, 0.01, 0.01], rgba=[1, 0, 0, 1], group=1
         )
-    for role, kind in SENSORS.items():
+    for role, kind in GRIP_SENSORS.items():
         name = gripper.spec.important_sensors.get(role, role)
         if name in missing:
             mjspec.add_sensor(name=name, type=kind, objtype=mujoco.mjtObj.mjOBJ_SITE, objname=FT_FRAME)

@@ -26,7 +26,7 @@ from assembler.robosuite.files import written_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.lossless import lossless_xml
-from assembler.robosuite_terms import DRIVEN_GROUPS, robot_type_name
+from assembler.robosuite_terms import DRIVEN_GROUPS, driven_actuators, robot_type_name
 
 P = TypeVar("P", bound=PartModel)
 
@@ -78,7 +78,8 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 "or set robosuite.enabled: false for a robot robosuite cannot drive",
             )
         )
-    servos = position_servos(mjspec, driven_actuators(robot))
+    driven = {name.removeprefix(robot.naming_prefix) for name in driven_actuators(robot)}
+    servos = position_servos(mjspec, driven)
     choice = robot.spec.robosuite.actuation
     names = ", ".join(servo.name for servo in servos)
     if servos and choice is None:
@@ -109,13 +110,6 @@ def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]
     targets = {actuator.target for actuator in mjspec.actuators}
     driven = DRIVEN_GROUPS[robot_type_name(type(robot))]
     return [j for j in robot.joint_names if robot.group_of(j) in driven and j not in targets]
-
-
-def driven_actuators(robot: ManipulatorModel) -> set[str]:
-    """The robot's own actuators (unprefixed) that robosuite's controllers write torques into."""
-    groups = robot.actuator_groups()
-    names = [name for group in DRIVEN_GROUPS[robot_type_name(type(robot))] for name in groups.get(group, [])]
-    return {name[len(robot.naming_prefix) :] for name in names if name.startswith(robot.naming_prefix)}
 
 
 def _memo(key: Any, cacheable: bool, emit: Any) -> str:

@@ -12,10 +12,9 @@ from __future__ import annotations
 from typing import Any
 
 from assembler.schema.expressions import evaluate_expression
+from assembler.schema.robot import Offset3
 
-OffsetValue = float | str
-
-DEFAULT_OFFSETS: dict[str, dict[str, tuple[OffsetValue, OffsetValue, OffsetValue]]] = {
+DEFAULT_OFFSETS: dict[str, dict[str, Offset3]] = {
     "single": {
         "bins": (-0.5, -0.1, 0.0),
         "empty": (-0.6, 0.0, 0.0),
@@ -33,18 +32,15 @@ DEFAULT_OFFSETS: dict[str, dict[str, tuple[OffsetValue, OffsetValue, OffsetValue
 def offsets(spec: Any) -> dict[str, Any]:
     """Per arena, the offset in the shape robosuite reads: the spec's, else robosuite's default for the
     spec's arm type."""
-    defaults = DEFAULT_OFFSETS.get(str(spec.arm_type), {})
-    arenas = {**defaults, **spec.base_xpos_offset}
-    return {arena: _for_robosuite(spec, arena, arena not in spec.base_xpos_offset) for arena in arenas}
+    arenas = {**DEFAULT_OFFSETS.get(str(spec.arm_type), {}), **spec.base_xpos_offset}
+    return {arena: _for_robosuite(arena, offset) for arena, offset in arenas.items()}
 
 
-def _for_robosuite(spec: Any, arena: str, default: bool) -> Any:
+def _for_robosuite(arena: str, offset: Offset3) -> Any:
     """One arena's offset: ``table``'s a function of the table length, every other three numbers."""
 
     def resolve(**variables: float) -> tuple[float, float, float]:
-        if not default:
-            return spec.resolve_base_xpos_offset(arena, **variables)  # type: ignore[no-any-return]
-        x, y, z = (evaluate_expression(v, variables) for v in DEFAULT_OFFSETS[str(spec.arm_type)][arena])
+        x, y, z = (evaluate_expression(value, variables) for value in offset)
         return (x, y, z)
 
     if arena == "table":
