@@ -151,16 +151,21 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
 def _repository_advice(homes: Iterable[Path], refused: Path) -> tuple[str, str]:
     """What a refusal says about spec repositories: the reach of the one holding the spec, or how to
     declare one when the spec and the refused file share an undeclared git checkout."""
+    homes = list(homes)
+    reach = {_resolved_folder(home) for home in homes}
+    undeclared = []
     for home in homes:
         try:
             repository = find_repository(home)
         except AssemblerError:  # a broken declaration was reported when the spec was read
             continue
-        if repository is not None:
+        if repository is None:
+            undeclared.append(home)
+        elif set(repository.readable) <= reach:  # not a package's root that lies in a checkout
             inside = refused.is_relative_to(repository.root)
             hint = f", or name its folder in allow of {repository.where}" if inside else ""
             return "the folders its spec repository declares, ", hint
-    for home in homes:
+    for home in undeclared:
         top = git_top(home)
         if top is not None and refused.is_relative_to(top):
             return "", (

@@ -158,6 +158,23 @@ def test_package_paths_stay_in_their_package(write: Write, reference: str, messa
     assert str(caught.value) == f"{spec}:2:7: mjcf: {message}"
 
 
+def test_a_package_installed_inside_a_spec_repository_is_confined_to_the_package(
+    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A virtual environment inside a checkout (CI's .ci-venv): the repository around the package's
+    # folder is not what the package's files may reach, and the refusal must not claim it is.
+    write("checkout/pyproject.toml", '[project]\nname = "lab"\n\n[tool.robot-assembler]\n')
+    write("checkout/specs/.keep", "")
+    write("checkout/venv/site/vendored_arm_pkg/__init__.py", "")
+    monkeypatch.syspath_prepend(str(tmp_path / "checkout" / "venv" / "site"))
+    reference = "package://vendored_arm_pkg/" + "../" * 30 + "etc/hostname"
+    spec = write("specs/arm.yaml", f"name: Arm\nmjcf: {reference}\n")
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0).check()
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {reference}: /etc/hostname {OUTSIDE}"
+
+
 def test_a_spec_file_linked_into_a_folder_from_outside_is_refused(write: Write, tmp_path: Path) -> None:
     secret = write("home/.env", "SECRET_TOKEN: abc123\n")
     write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n")
