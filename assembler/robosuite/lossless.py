@@ -128,6 +128,10 @@ def _restore_pose(child: ET.Element, item: Any, degrees: bool) -> None:
 def _written(spec: mujoco.MjSpec) -> str:
     """MuJoCo's text of ``spec`` at 17 digits; a part that cannot compile alone (a mobile base's
     massless moving support) gets a massive stand-in child per body first, removed from the text."""
+    # The writer's compile reads the mesh files, not the mesh store, on purpose: meshes decoded from
+    # files stay processed in MuJoCo's own asset cache, so robosuite's two compiles of the same files
+    # that follow are fast. With stored meshes (given in memory, never kept there) Lift Panda's make
+    # measured 1.40x robosuite's own instead of 1.08x (5 interleaved runs each, 2026-11-24).
     try:
         return to_xml(spec, EXACT_DIGITS)
     except ValueError:
