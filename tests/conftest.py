@@ -58,6 +58,15 @@ init_qpos: [0.5, -0.5]
 """
 
 
+def use_private_cache(folder: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """Point the model cache (and its mesh store) at ``folder``, the cache on and no size limit
+    inherited from the environment: for tests of the cache itself."""
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
+    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    return folder
+
+
 @pytest.fixture(autouse=True)
 def isolated_cache(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch) -> None:
     """The compiled-model cache of the test session lives in a temporary folder, never the user's."""

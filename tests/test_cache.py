@@ -22,6 +22,7 @@ from assembler import cache
 from assembler.cache import default_store, wait_for_writes
 from assembler.cli import main
 from assembler.paths import package_root
+from tests.conftest import use_private_cache
 
 TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
@@ -75,10 +76,7 @@ COMPARED_FIELDS = (
 @pytest.fixture(autouse=True)
 def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     """A fresh cache folder per test; the working folder is the test's too, to catch MUJOCO_LOG.TXT."""
-    folder = tmp_path / "model-cache"
-    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
-    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
-    monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    folder = use_private_cache(tmp_path / "model-cache", monkeypatch)
     monkeypatch.chdir(tmp_path)
     yield folder
     wait_for_writes()

@@ -18,6 +18,7 @@ from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.mjcf.emit import to_xml
 from assembler.paths import package_root
+from tests.conftest import use_private_cache
 
 ROBOSUITE = package_root("robosuite") is not None
 needs_robosuite = pytest.mark.skipif(not ROBOSUITE, reason="robosuite is not installed")
@@ -26,10 +27,7 @@ needs_robosuite = pytest.mark.skipif(not ROBOSUITE, reason="robosuite is not ins
 @pytest.fixture(autouse=True)
 def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     """A fresh cache folder (models and meshes) per test."""
-    folder = tmp_path / "model-cache"
-    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
-    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
-    monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    folder = use_private_cache(tmp_path / "model-cache", monkeypatch)
     yield folder
     wait_for_writes()
 

@@ -33,6 +33,7 @@ from assembler.cache.mesh_swap import (
 from assembler.cache.meshes import MAGIC, MeshStore, default_mesh_store
 from assembler.mjcf.versions import mujoco_at_least
 from assembler.paths import package_root
+from tests.conftest import use_private_cache
 
 HAS_ROBOSUITE = package_root("robosuite") is not None
 
@@ -522,9 +523,7 @@ def test_stale_claims_and_temporary_files_are_removed_and_a_fresh_claim_holds(
 def test_the_background_filler_stores_what_a_compile_met_and_ignores_the_working_folder(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
-    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
-    monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
+    use_private_cache(tmp_path / "cache", monkeypatch)
     decoy = tmp_path / "work" / "assembler"
     decoy.mkdir(parents=True)
     (decoy / "__init__.py").write_text(f"open({str(tmp_path / 'decoy-ran')!r}, 'w')\n")

@@ -18,6 +18,7 @@ from assembler.cache import requests as request_records
 from assembler.cache import wait_for_writes
 from assembler.cache.requests import default_request_store, request_key
 from assembler.cli import main
+from tests.conftest import use_private_cache
 
 ARM = """\
 <mujoco model="arm">
@@ -41,9 +42,7 @@ ARM_SPEC = "name: Arm\nmjcf: arm.xml\njoint_defaults: {{damping: {damping}}}\n"
 
 @pytest.fixture(autouse=True)
 def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    folder = tmp_path / "model-cache"
-    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
-    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
+    folder = use_private_cache(tmp_path / "model-cache", monkeypatch)
     monkeypatch.chdir(tmp_path)
     yield folder
     wait_for_writes()

@@ -17,6 +17,7 @@ import assembler
 from assembler import cache
 from assembler.cache import wait_for_writes
 from assembler.urdf.meshes import converted_dir, converter_available, importable
+from tests.conftest import use_private_cache
 from tests.urdf_fixtures import ARM_URDF, write_package, write_stl
 
 SPEC = "name: CachedArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
@@ -25,10 +26,7 @@ SPEC = "name: CachedArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: 
 @pytest.fixture(autouse=True)
 def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """A fresh cache folder (and converted-mesh folder below it) per test."""
-    folder = tmp_path / "model-cache"
-    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(folder))
-    monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
-    return folder
+    return use_private_cache(tmp_path / "model-cache", monkeypatch)
 
 
 def _backdate(*paths: Path, seconds_ago: float = 3600) -> None:
