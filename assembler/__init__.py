@@ -18,19 +18,7 @@ from assembler.errors import AssemblerError, JointAttributeError, MjcfError, Pro
 from assembler.version import __version__
 
 if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imported on first use
-    from assembler.assembly import assemble, create_base, create_gripper, create_robot
-    from assembler.catalog import (
-        add_spec_folders,
-        class_from_spec,
-        load_shipped_specs,
-        register_spec_string,
-        register_specs,
-        with_overrides,
-    )
-    from assembler.documents import LoadedSpec, Override, parse_overrides
-    from assembler.experiment import Experiment, load_experiment
-    from assembler.loader import load_paths, load_string
-    from assembler.loading import load_model
+    from assembler.build.load_model import load_model
     from assembler.models import (
         GripperModel,
         HumanoidModel,
@@ -40,7 +28,16 @@ if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imp
         RobotBaseModel,
         RobotModel,
     )
-    from assembler.registry import (
+    from assembler.registry.catalog import (
+        add_spec_folders,
+        class_from_spec,
+        load_shipped_specs,
+        register_spec_string,
+        register_specs,
+        with_overrides,
+    )
+    from assembler.registry.instances import assemble, create_base, create_gripper, create_robot
+    from assembler.registry.lookup import (
         REGISTERED_BASES,
         REGISTERED_GRIPPERS,
         REGISTERED_ROBOTS,
@@ -50,29 +47,32 @@ if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imp
         register_robot,
         registered_robot_names,
     )
-    from assembler.scene import Scene, build_scene, load_scene
-    from assembler.schema import BaseSpec, ExperimentSpec, GripperSpec, RobotSpec, SceneSpec
-    from assembler.variants import VariantPlan, write_variants
+    from assembler.spec.documents import LoadedSpec, Override, parse_overrides
+    from assembler.spec.schema import BaseSpec, ExperimentSpec, GripperSpec, RobotSpec, SceneSpec
+    from assembler.spec.spec_files import load_paths, load_string
+    from assembler.worlds.experiment import Experiment, load_experiment
+    from assembler.worlds.scene import Scene, build_scene, load_scene
+    from assembler.worlds.variants import VariantPlan, write_variants
 
 _LAZY: dict[str, str] = {
-    "assemble": "assembler.assembly",
-    "create_base": "assembler.assembly",
-    "create_gripper": "assembler.assembly",
-    "create_robot": "assembler.assembly",
-    "add_spec_folders": "assembler.catalog",
-    "class_from_spec": "assembler.catalog",
-    "load_shipped_specs": "assembler.catalog",
-    "register_spec_string": "assembler.catalog",
-    "register_specs": "assembler.catalog",
-    "with_overrides": "assembler.catalog",
-    "LoadedSpec": "assembler.documents",
-    "Override": "assembler.documents",
-    "parse_overrides": "assembler.documents",
-    "Experiment": "assembler.experiment",
-    "load_experiment": "assembler.experiment",
-    "load_paths": "assembler.loader",
-    "load_string": "assembler.loader",
-    "load_model": "assembler.loading",
+    "assemble": "assembler.registry.instances",
+    "create_base": "assembler.registry.instances",
+    "create_gripper": "assembler.registry.instances",
+    "create_robot": "assembler.registry.instances",
+    "add_spec_folders": "assembler.registry.catalog",
+    "class_from_spec": "assembler.registry.catalog",
+    "load_shipped_specs": "assembler.registry.catalog",
+    "register_spec_string": "assembler.registry.catalog",
+    "register_specs": "assembler.registry.catalog",
+    "with_overrides": "assembler.registry.catalog",
+    "LoadedSpec": "assembler.spec.documents",
+    "Override": "assembler.spec.documents",
+    "parse_overrides": "assembler.spec.documents",
+    "Experiment": "assembler.worlds.experiment",
+    "load_experiment": "assembler.worlds.experiment",
+    "load_paths": "assembler.spec.spec_files",
+    "load_string": "assembler.spec.spec_files",
+    "load_model": "assembler.build.load_model",
     "GripperModel": "assembler.models",
     "HumanoidModel": "assembler.models",
     "HumanoidUpperBodyModel": "assembler.models",
@@ -80,45 +80,39 @@ _LAZY: dict[str, str] = {
     "ManipulatorModel": "assembler.models",
     "RobotBaseModel": "assembler.models",
     "RobotModel": "assembler.models",
-    "REGISTERED_BASES": "assembler.registry",
-    "REGISTERED_GRIPPERS": "assembler.registry",
-    "REGISTERED_ROBOTS": "assembler.registry",
-    "RobotModelMeta": "assembler.registry",
-    "register_base": "assembler.registry",
-    "register_gripper": "assembler.registry",
-    "register_robot": "assembler.registry",
-    "registered_robot_names": "assembler.registry",
-    "Scene": "assembler.scene",
-    "build_scene": "assembler.scene",
-    "load_scene": "assembler.scene",
-    "BaseSpec": "assembler.schema",
-    "ExperimentSpec": "assembler.schema",
-    "GripperSpec": "assembler.schema",
-    "RobotSpec": "assembler.schema",
-    "SceneSpec": "assembler.schema",
-    "VariantPlan": "assembler.variants",
-    "write_variants": "assembler.variants",
+    "REGISTERED_BASES": "assembler.registry.lookup",
+    "REGISTERED_GRIPPERS": "assembler.registry.lookup",
+    "REGISTERED_ROBOTS": "assembler.registry.lookup",
+    "RobotModelMeta": "assembler.registry.lookup",
+    "register_base": "assembler.registry.lookup",
+    "register_gripper": "assembler.registry.lookup",
+    "register_robot": "assembler.registry.lookup",
+    "registered_robot_names": "assembler.registry.lookup",
+    "Scene": "assembler.worlds.scene",
+    "build_scene": "assembler.worlds.scene",
+    "load_scene": "assembler.worlds.scene",
+    "BaseSpec": "assembler.spec.schema",
+    "ExperimentSpec": "assembler.spec.schema",
+    "GripperSpec": "assembler.spec.schema",
+    "RobotSpec": "assembler.spec.schema",
+    "SceneSpec": "assembler.spec.schema",
+    "VariantPlan": "assembler.worlds.variants",
+    "write_variants": "assembler.worlds.variants",
 }
 """Each public name imported on first use, and the module it comes from."""
 
 SUBPACKAGES: tuple[str, ...] = (
+    "build",
     "cache",
-    "catalog",
     "cli",
-    "diff",
-    "documents",
-    "lint",
-    "loader",
+    "files",
     "mjcf",
     "models",
-    "paths",
-    "references",
     "registry",
-    "render",
-    "scene",
-    "schema",
-    "validation",
-    "variants",
+    "spec",
+    "tools",
+    "urdf",
+    "worlds",
 )
 """Modules reachable as attributes (``assembler.cache``) once anything asks for them."""
 

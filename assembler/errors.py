@@ -11,7 +11,7 @@ import difflib
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from assembler.fieldpath import FieldPath
+from assembler.spec.fieldpath import FieldPath
 
 
 @dataclass(frozen=True)

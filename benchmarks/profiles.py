@@ -57,7 +57,7 @@ def variants(name: str, count: int, scratch: Path) -> str:
     values = ",".join(str(round(0.05 + 0.01 * index, 4)) for index in range(count))
     env = _cache(scratch / f"pv-{name}", scratch / f"meshes-{name}")
     work = (
-        "from assembler.variants import Grid, VariantPlan, write_variants\n"
+        "from assembler.worlds.variants import Grid, VariantPlan, write_variants\n"
         f"grid = Grid.parse('joint_defaults.damping={values}')\n"
         f"plan = VariantPlan(robot={name!r}, grids=(grid,), jobs=1)\n"
         f"write_variants(plan, {str(scratch / f'pv-{name}-out')!r})"

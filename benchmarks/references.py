@@ -6,9 +6,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import assembler
-from assembler.paths import package_root, shipped_specs_dir
-from assembler.scene import Scene, build_scene
-from assembler.schema import SceneSpec
+from assembler.files.paths import package_root, shipped_specs_dir
+from assembler.spec.schema import SceneSpec
+from assembler.worlds.scene import Scene, build_scene
 
 SCALE_ROBOT = "Sparrow7"
 

@@ -24,7 +24,7 @@ def _values(count: int) -> list[float]:
 
 def _ours(name: str, count: int, folder: Path, env: dict[str, str]) -> Run:
     grid = "joint_defaults.damping=" + ",".join(str(v) for v in _values(count))
-    imports = "from assembler.variants import Grid, VariantPlan, write_variants"
+    imports = "from assembler.worlds.variants import Grid, VariantPlan, write_variants"
     work = (
         f"write_variants(VariantPlan(robot={name!r}, grids=(Grid.parse({grid!r}),), jobs=1), {str(folder)!r})"
     )

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 TWO_LINK_MJCF = """\
 <mujoco model="twolink">

@@ -13,7 +13,7 @@ import mujoco
 import pytest
 
 from assembler.cli import main
-from assembler.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
+from assembler.files.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
 from tests.conftest import MOBILE_MJCF, TWO_LINK_MJCF
 
 ARM = b"name: Arm\nmjcf: twolink.xml\n"

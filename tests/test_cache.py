@@ -21,7 +21,7 @@ import assembler
 from assembler import cache
 from assembler.cache import default_store, wait_for_writes
 from assembler.cli import main
-from assembler.paths import package_root
+from assembler.files.paths import package_root
 from tests.conftest import use_private_cache
 
 TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"

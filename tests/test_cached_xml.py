@@ -16,8 +16,8 @@ from assembler import cache
 from assembler.cache import default_store, wait_for_writes
 from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
+from assembler.files.paths import package_root
 from assembler.mjcf.emit import to_xml
-from assembler.paths import package_root
 from tests.conftest import use_private_cache
 
 ROBOSUITE = package_root("robosuite") is not None

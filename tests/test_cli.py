@@ -12,8 +12,8 @@ import pytest
 
 from assembler.cli import build_parser, main
 from assembler.errors import summarize_names
-from assembler.paths import shipped_specs_dir
-from assembler.registry import REGISTRIES
+from assembler.files.paths import shipped_specs_dir
+from assembler.registry.lookup import REGISTRIES
 
 
 def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:

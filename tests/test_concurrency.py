@@ -21,7 +21,7 @@ import pytest
 from assembler.cache import ModelStore
 from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX
 from assembler.cli import main
-from assembler.paths import package_root
+from assembler.files.paths import package_root
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
 

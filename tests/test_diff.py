@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from assembler.cli import main
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_ROBOTS
 from tests.conftest import TWO_LINK_MJCF, TWO_LINK_SPEC
 
 THREE_LINK_MJCF = TWO_LINK_MJCF.replace(
@@ -147,7 +147,7 @@ def test_two_versions_of_one_robot_are_not_registered(
 
 
 def test_registered_name_and_its_spec_file_are_identical(capsys: pytest.CaptureFixture[str]) -> None:
-    from assembler.paths import shipped_specs_dir
+    from assembler.files.paths import shipped_specs_dir
 
     code, out, _ = run(capsys, "diff", "Sparrow7", str(shipped_specs_dir() / "sparrow7.yaml"))
     assert (code, out.splitlines()[-1]) == (0, "no differences")

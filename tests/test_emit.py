@@ -11,7 +11,7 @@ import pytest
 
 import assembler
 from assembler.errors import MjcfError
-from assembler.writing import write_atomically
+from assembler.files.writing import write_atomically
 
 MESH_ROBOT = """\
 <mujoco model="meshy">

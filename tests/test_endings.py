@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from assembler.cli import main
-from assembler.paths import package_root
+from assembler.files.paths import package_root
 from tests.conftest import TWO_LINK_MJCF
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"

@@ -11,7 +11,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import SpecError
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_ROBOTS
 
 TWO_ROBOTS = """\
 kind: experiment

@@ -14,8 +14,8 @@ import mujoco
 import pytest
 
 import assembler
-from assembler import writing
 from assembler.cli import main
+from assembler.files import writing
 from tests.conftest import TWO_LINK_MJCF
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"

@@ -23,9 +23,9 @@ from hypothesis import strategies as st
 from hypothesis.configuration import set_hypothesis_home_dir
 
 from assembler.cli import main
-from assembler.paths import shipped_specs_dir
-from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
-from assembler.schema import RobotSpec
+from assembler.files.paths import shipped_specs_dir
+from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.spec.schema import RobotSpec
 from assembler.urdf.packages import package_folders
 
 set_hypothesis_home_dir(Path(tempfile.gettempdir()) / "robot-assembler-hypothesis")

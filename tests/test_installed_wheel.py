@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from assembler.extras import install_command
+from assembler.files.extras import install_command
 
 pytestmark = pytest.mark.wheel
 
@@ -150,7 +150,7 @@ def _readme_command(command: str) -> list[str]:
 
 
 def test_the_wheel_is_what_runs_not_the_source_tree(installed: Installed) -> None:
-    code = "import assembler, assembler.paths as p; print(assembler.__file__); print(p.shipped_specs_dir())"
+    code = "import assembler, assembler.files.paths as p; print(assembler.__file__); print(p.shipped_specs_dir())"
     module, specs = installed.ok(installed.scratch, "python", "-c", code)
     assert "site-packages" in module and specs.endswith("site-packages/assembler/_shipped/specs")
 

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-import assembler.catalog  # noqa: F401  (registers the shipped specs)
+import assembler.registry.catalog  # noqa: F401  (registers the shipped specs)
 from assembler.cli import build_parser, main
 from assembler.cli.report import github_annotation
 from assembler.errors import Location

@@ -9,8 +9,8 @@ import pytest
 
 import assembler
 from assembler.errors import SpecError
-from assembler.loader import load_paths, load_string
-from assembler.paths import display_path
+from assembler.files.paths import display_path
+from assembler.spec.spec_files import load_paths, load_string
 
 Write = Callable[[str, str], Path]
 
@@ -147,7 +147,7 @@ def test_extends_a_registered_robot_by_name(two_link: Path, write: Write) -> Non
     assembler.register_specs(two_link)
     loaded = load_string(
         "name: TwoLinkSoft\nextends: TwoLink\njoint_defaults: {damping: 0.01}\n",
-        assembler.catalog.PARENTS,
+        assembler.registry.catalog.PARENTS,
     )
     assert loaded.spec.init_qpos == [0.5, -0.5]
     assert loaded.spec.mjcf == str(two_link.parent / "twolink.xml")
@@ -175,7 +175,7 @@ def test_inheritance_cycle_is_named(write: Write) -> None:
 def test_unknown_parent_suggests_the_closest_name(two_link: Path) -> None:
     assembler.register_specs(two_link)
     with pytest.raises(SpecError, match=r"extends: unknown robot spec 'TwoLnk'. Did you mean 'TwoLink'\?$"):
-        load_string("name: X\nextends: TwoLnk\n", assembler.catalog.PARENTS)
+        load_string("name: X\nextends: TwoLnk\n", assembler.registry.catalog.PARENTS)
 
 
 def test_missing_parent_file_is_reported(write: Write) -> None:

@@ -31,8 +31,8 @@ from assembler.cache.mesh_swap import (
     wait_for_fillers,
 )
 from assembler.cache.meshes import MAGIC, MeshStore, default_mesh_store
+from assembler.files.paths import package_root
 from assembler.mjcf.versions import mujoco_at_least
-from assembler.paths import package_root
 from tests.conftest import use_private_cache
 
 HAS_ROBOSUITE = package_root("robosuite") is not None

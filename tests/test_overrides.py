@@ -10,7 +10,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import AssemblerError, SpecError
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_ROBOTS
 
 
 def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:

@@ -12,7 +12,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError, SpecError
-from assembler.paths import ALLOW_VARIABLE, allow_paths
+from assembler.files.paths import ALLOW_VARIABLE, allow_paths
 from tests.conftest import TWO_LINK_MJCF
 
 Write = Callable[[str, str], Path]

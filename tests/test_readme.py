@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 import assembler
-from assembler.catalog import PARENTS
-from assembler.loader import load_string
-from assembler.repository import find_repository
+from assembler.files.repositories import find_repository
+from assembler.registry.catalog import PARENTS
+from assembler.spec.spec_files import load_string
 
 ROOT = Path(__file__).parent.parent
 README = (ROOT / "README.md").read_text()

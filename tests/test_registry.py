@@ -9,7 +9,7 @@ import pytest
 import assembler
 from assembler.errors import RegistryError
 from assembler.models import ManipulatorModel, RobotModel
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_ROBOTS
 
 
 def test_shipped_specs_are_registered_on_import() -> None:

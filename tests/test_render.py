@@ -15,11 +15,11 @@ import pytest
 
 import assembler
 from assembler.cli import arguments, main
-from assembler.geom_groups import GROUP_COUNT, geoms_by_part
 from assembler.models import RobotModel
-from assembler.render import LABELS, VIEWS, encode_png
-from assembler.render.picture import render_views
-from assembler.render.stage import FLOOR, HIDDEN_GROUP, Stage, build_stage
+from assembler.models.geom_groups import GROUP_COUNT, geoms_by_part
+from assembler.tools.render import LABELS, VIEWS, encode_png
+from assembler.tools.render.picture import render_views
+from assembler.tools.render.stage import FLOOR, HIDDEN_GROUP, Stage, build_stage
 
 WIDTH, HEIGHT = 240, 180
 

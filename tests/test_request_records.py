@@ -183,7 +183,7 @@ def test_requests_in_environments_with_another_package_location_do_not_share_rec
     edit(tmp_path / "fake.yaml", "name: FakeBot\nmjcf: package://fakebot/robot.xml\n", 3600)
     script = (
         "import sys, assembler; m = assembler.load_model(sys.argv[1]); assembler.cache.wait_for_writes(); "
-        "print(m.geom('robot0_base_col').size[0], 'assembler.catalog' in sys.modules)"
+        "print(m.geom('robot0_base_col').size[0], 'assembler.registry.catalog' in sys.modules)"
     )
     seen = []
     for install, radius in (("a", "0.3"), ("b", "0.9"), ("a", "0.3")):

@@ -11,8 +11,8 @@ import pytest
 import yaml
 
 from assembler.cli import main
-from assembler.schema.json_schema import REFERENCE_FILE, SCHEMA_FILE, schema_text, spec_json_schema
-from assembler.schema.reference import markdown_reference, type_text
+from assembler.spec.schema.json_schema import REFERENCE_FILE, SCHEMA_FILE, schema_text, spec_json_schema
+from assembler.spec.schema.reference import markdown_reference, type_text
 
 ROOT = Path(__file__).parent.parent
 SHIPPED_SPECS = sorted((ROOT / "specs").rglob("*.yaml"))

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.loader import load_paths
-from assembler.paths import PACKAGE_SCHEME, shipped_specs_dir
+from assembler.files.paths import PACKAGE_SCHEME, shipped_specs_dir
+from assembler.spec.spec_files import load_paths
 
 # robosuite's parts (specs/robosuite, read from the installed package) are covered by test_parity.py.
 LOADED = [s for s in load_paths([shipped_specs_dir()]) if not s.spec.source_file.startswith(PACKAGE_SCHEME)]

@@ -13,8 +13,8 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError, RegistryError, SpecError
-from assembler.paths import ALLOW_VARIABLE, shipped_assets_dir, shipped_specs_dir
-from assembler.registry import REGISTERED_ROBOTS
+from assembler.files.paths import ALLOW_VARIABLE, shipped_assets_dir, shipped_specs_dir
+from assembler.registry.lookup import REGISTERED_ROBOTS
 from tests.conftest import TWO_LINK_MJCF
 from tests.test_paths_confinement import MESH_MJCF, OUTSIDE, TETRA
 

@@ -18,9 +18,9 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError
-from assembler.extras import install_command
+from assembler.files.extras import install_command
+from assembler.files.paths import allowing, shipped_specs_dir
 from assembler.models import RobotModel
-from assembler.paths import allowing, shipped_specs_dir
 from assembler.urdf import load_urdf
 from assembler.urdf.document import read_urdf
 from assembler.urdf.meshes import converted_dir, converter_available, importable

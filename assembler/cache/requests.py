@@ -47,7 +47,7 @@ MAX_RECORDS = 2048
 """Records kept at most (each a few hundred bytes); the least recently used go first."""
 
 ALLOW_VARIABLE = "ASSEMBLER_ALLOW_PATHS"
-"""Folders every spec may read (:mod:`assembler.paths`; named here so this module stays light)."""
+"""Folders every spec may read (:mod:`assembler.files.paths`; named here so this module stays light)."""
 
 
 @dataclass(frozen=True)

@@ -19,13 +19,13 @@ REPORT_FORMATS: dict[str, str] = {
 """Output formats of problems and findings (validate, lint) and what each is for."""
 
 DIFF_FORMATS: tuple[str, ...] = ("json", "markdown", "text")
-"""``assembler diff``'s formats (``assembler.diff.FORMATS``; a test keeps them equal)."""
+"""``assembler diff``'s formats (``assembler.tools.diff.FORMATS``; a test keeps them equal)."""
 
 VIEWS: tuple[str, ...] = ("front", "side", "top", "iso")
-"""``assembler render``'s views (``assembler.render.VIEWS``; a test keeps them equal)."""
+"""``assembler render``'s views (``assembler.tools.render.VIEWS``; a test keeps them equal)."""
 
 LABELS: tuple[str, ...] = ("bodies", "joints", "sites")
-"""``assembler render --labels`` choices (``assembler.render.LABELS``; a test keeps them equal)."""
+"""``assembler render --labels`` choices (``assembler.tools.render.LABELS``; a test keeps them equal)."""
 
 MAX_SIDE = 8192
 """Largest view width or height accepted (MuJoCo allocates an offscreen buffer of that size)."""
@@ -112,7 +112,7 @@ def image_size(text: str) -> tuple[int, int]:
 
 
 GEOM_GROUPS = range(6)
-"""MuJoCo's geom groups (``mjNGROUP``); ``assembler.geom_groups.GROUP_COUNT`` (a test keeps them equal)."""
+"""MuJoCo's geom groups (``mjNGROUP``); ``models.geom_groups.GROUP_COUNT`` (a test keeps them equal)."""
 
 
 def geom_groups(text: str) -> tuple[int, ...]:

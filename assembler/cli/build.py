@@ -8,9 +8,9 @@ import argparse
 import sys
 from pathlib import Path
 
+from assembler.build.request import record_answer
 from assembler.cli.common import assembled, idle_override_warnings, use_cache
 from assembler.cli.quick_build import build_request, robot_file, write_xml
-from assembler.requesting import record_answer
 
 
 def run(args: argparse.Namespace) -> int:

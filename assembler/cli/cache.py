@@ -9,7 +9,7 @@ from assembler.cache.meshes import default_mesh_store
 from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.cli.common import table
 from assembler.errors import AssemblerError
-from assembler.paths import display_path
+from assembler.files.paths import display_path
 
 
 def run(args: argparse.Namespace) -> int:

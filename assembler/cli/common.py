@@ -6,14 +6,14 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from assembler.assembly import DEFAULT, assemble, create_robot
-from assembler.catalog import register_specs
-from assembler.documents import SPEC_SUFFIXES, Override, parse_overrides
-from assembler.effects import overrides_without_effect
+from assembler.build.override_effects import overrides_without_effect
 from assembler.errors import AssemblerError
+from assembler.files.paths import is_file
 from assembler.models import RobotModel
-from assembler.paths import is_file
-from assembler.registry import robot_class
+from assembler.registry.catalog import register_specs
+from assembler.registry.instances import DEFAULT, assemble, create_robot
+from assembler.registry.lookup import robot_class
+from assembler.spec.documents import SPEC_SUFFIXES, Override, parse_overrides
 
 
 def robot_name(reference: str) -> str:

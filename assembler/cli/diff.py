@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from assembler.diff import FORMATS, compare
+from assembler.tools.diff import FORMATS, compare
 
 
 def run(args: argparse.Namespace) -> int:

@@ -6,8 +6,8 @@ from __future__ import annotations
 import argparse
 import importlib
 
-from assembler.catalog import add_spec_folders
-from assembler.paths import allowing
+from assembler.files.paths import allowing
+from assembler.registry.catalog import add_spec_folders
 
 
 def run_command(args: argparse.Namespace) -> int:

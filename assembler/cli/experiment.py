@@ -12,11 +12,11 @@ import json
 import sys
 from pathlib import Path
 
-from assembler.catalog import applied_overrides
-from assembler.experiment import load_experiment
+from assembler.files.paths import display_path
+from assembler.files.writing import write_atomically
 from assembler.models import RobotModel
-from assembler.paths import display_path
-from assembler.writing import write_atomically
+from assembler.registry.catalog import applied_overrides
+from assembler.worlds.experiment import load_experiment
 
 
 def describe(robot: RobotModel) -> str:

@@ -6,9 +6,9 @@ import argparse
 import json
 
 from assembler.cli.common import bare_robot, override_flags, table
+from assembler.files.paths import display_path
 from assembler.models.actuator_table import ActuatorRecord
-from assembler.paths import display_path
-from assembler.schema import JOINT_RULE_ATTRIBUTES
+from assembler.spec.schema import JOINT_RULE_ATTRIBUTES
 
 
 def run(args: argparse.Namespace) -> int:

@@ -11,12 +11,12 @@ import json
 from collections import Counter
 from collections.abc import Sequence
 
-from assembler.catalog import classes_named
 from assembler.cli.common import assembled, use_cache
 from assembler.cli.report import github_annotation, location_fields, print_problems
 from assembler.errors import AssemblerError, Problem
-from assembler.lint import SEVERITIES, Finding, LintTarget, lint, part_target, robot_target
 from assembler.models import PartModel
+from assembler.registry.catalog import classes_named
+from assembler.tools.lint import SEVERITIES, Finding, LintTarget, lint, part_target, robot_target
 
 
 def _target(cls: type[PartModel], args: argparse.Namespace) -> LintTarget:

@@ -14,9 +14,9 @@ from typing import TypeVar
 
 from assembler.cli.common import table
 from assembler.errors import AssemblerError, MissingPackageError
+from assembler.files.paths import display_path, shipped_specs_dir
 from assembler.models import PartModel
-from assembler.paths import display_path, shipped_specs_dir
-from assembler.registry import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 
 def _dof_text(cls: type[PartModel]) -> str:

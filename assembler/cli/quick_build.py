@@ -12,9 +12,9 @@ from pathlib import Path
 from typing import Any
 
 from assembler.cache.repeat import answered_xml
+from assembler.files.paths import allowing, display_path, is_file
+from assembler.files.writing import write_atomically
 from assembler.mjcf.emit import bundle_xml
-from assembler.paths import allowing, display_path, is_file
-from assembler.writing import write_atomically
 
 
 def robot_file(args: argparse.Namespace) -> Path | None:

@@ -7,10 +7,10 @@ import sys
 from pathlib import Path
 
 from assembler.cli.common import assembled
-from assembler.paths import display_path
-from assembler.render import encode_png, take_picture
-from assembler.render.picture import check_views
-from assembler.writing import write_atomically
+from assembler.files.paths import display_path
+from assembler.files.writing import write_atomically
+from assembler.tools.render import encode_png, take_picture
+from assembler.tools.render.picture import check_views
 
 
 def run(args: argparse.Namespace) -> int:

@@ -6,10 +6,10 @@ import argparse
 import sys
 from pathlib import Path
 
+from assembler.files.paths import display_path
+from assembler.files.writing import write_atomically
 from assembler.mjcf.emit import to_xml
-from assembler.paths import display_path
-from assembler.scene import load_scene
-from assembler.writing import write_atomically
+from assembler.worlds.scene import load_scene
 
 
 def run(args: argparse.Namespace) -> int:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from assembler.schema.json_schema import schema_text
+from assembler.spec.schema.json_schema import schema_text
 
 
 def run(args: argparse.Namespace) -> int:

@@ -11,7 +11,7 @@ import argparse
 
 from assembler.cli.report import print_problems
 from assembler.errors import AssemblerError
-from assembler.validation import ValidationReport, validate_specs
+from assembler.tools.validate import ValidationReport, validate_specs
 
 
 def summary(report: ValidationReport, compiled: bool) -> list[str]:

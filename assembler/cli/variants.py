@@ -7,12 +7,12 @@ import sys
 from pathlib import Path
 from typing import Literal
 
-from assembler.assembly import DEFAULT
 from assembler.cli.common import gripper_choices, robot_name
-from assembler.documents import SPEC_SUFFIXES
-from assembler.paths import display_path
-from assembler.registry import robot_class
-from assembler.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
+from assembler.files.paths import display_path
+from assembler.registry.instances import DEFAULT
+from assembler.registry.lookup import robot_class
+from assembler.spec.documents import SPEC_SUFFIXES
+from assembler.worlds.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
 
 
 def plan_from(args: argparse.Namespace) -> VariantPlan:

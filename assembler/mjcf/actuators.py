@@ -15,7 +15,7 @@ from typing import Literal
 
 import mujoco
 
-from assembler.schema import ActuatorDeclaration
+from assembler.spec.schema import ActuatorDeclaration
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
 TRUE, FALSE = mujoco.mjtLimited.mjLIMITED_TRUE, mujoco.mjtLimited.mjLIMITED_FALSE

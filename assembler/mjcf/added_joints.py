@@ -7,7 +7,7 @@ from collections.abc import Sequence
 import mujoco
 
 from assembler.errors import MjcfError, summarize_names
-from assembler.schema.added_joints import AddedJoint, VelocityActuator
+from assembler.spec.schema.added_joints import AddedJoint, VelocityActuator
 
 _TYPES = {"slide": mujoco.mjtJoint.mjJNT_SLIDE, "hinge": mujoco.mjtJoint.mjJNT_HINGE}
 

@@ -12,8 +12,8 @@ from __future__ import annotations
 import mujoco
 
 from assembler.errors import MjcfError
+from assembler.files.paths import display_path
 from assembler.mjcf.versions import mujoco_at_least
-from assembler.paths import display_path
 
 PREFIXES_TENDON_MATERIALS_AND_SKINS = (3, 16)
 PREFIXES_SKIN_FILE_BONES = (3, 17)

@@ -1,5 +1,5 @@
 """Emitted MJCF: text precise enough to reload the same model, and a self-contained bundle with
-its assets (written atomically, :mod:`assembler.writing`). A bundle writes only inside its folder:
+its assets (written atomically, :mod:`assembler.files.writing`). A bundle writes only inside its folder:
 asset names from the MJCF are reduced to plain names.
 """
 
@@ -17,8 +17,8 @@ from pathlib import Path
 import mujoco
 
 from assembler.errors import AssemblerError
-from assembler.paths import display_path
-from assembler.writing import copy_atomically, make_folder, undone_on_failure, write_atomically
+from assembler.files.paths import display_path
+from assembler.files.writing import copy_atomically, make_folder, undone_on_failure, write_atomically
 
 XML_SIGNIFICANT_DIGITS = 15
 """Digits written per number: round-trips every value to 1e-15 yet keeps 0.1 as "0.1"."""

@@ -5,7 +5,7 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 
-from assembler.schema.fixes import MjcfFix
+from assembler.spec.schema.fixes import MjcfFix
 
 
 def apply_fixes(root: ET.Element, fixes: Sequence[MjcfFix]) -> list[str]:

@@ -3,7 +3,7 @@
 Each robot instance gets a cheap copy of the pristine spec. Asset paths are made absolute (and
 ``meshdir``/``texturedir`` cleared) before anything is attached, because ``MjSpec.to_xml`` keeps only
 the outermost model's directories: without this the emitted XML would not load from another
-working directory. Every asset path must stay in the allowed folders (:func:`assembler.paths.confine`),
+working directory. Every asset path must stay in the allowed folders (:func:`assembler.files.paths.confine`),
 and the file passes :mod:`assembler.mjcf.xml_guard` before any parser reads it. Once read, the file
 is compiled on its own as MuJoCo would (:mod:`assembler.mjcf.file_check`): what MuJoCo refuses is
 refused here, with the file's line, rather than dropped by ``MjSpec.attach`` later.
@@ -22,6 +22,7 @@ import mujoco
 from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
+from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.attach_compat import refuse_unattachable
@@ -31,8 +32,7 @@ from assembler.mjcf.fixes import apply_fixes
 from assembler.mjcf.joints import named_joints
 from assembler.mjcf.refusal import LineMap, original_lines, refusal_line, repaired_lines, same_lines
 from assembler.mjcf.xml_guard import check_mjcf
-from assembler.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
-from assembler.schema.fixes import MjcfFix
+from assembler.spec.schema.fixes import MjcfFix
 
 GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "statistic")
 """Model-wide sections a standalone robot keeps from its own file (e.g. its integrator)."""

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from assembler.errors import MjcfError
+from assembler.files.paths import display_path
 from assembler.mjcf.source import MjcfSource
-from assembler.paths import display_path
 
 
 def root_body_name(source: MjcfSource) -> str:

@@ -3,12 +3,12 @@
 A spec's MJCF may come from a pull request, so before any full parser sees it we check, with a
 streaming pass of expat that builds nothing:
 
-- its size (:data:`assembler.limits.MAX_MJCF_BYTES`);
+- its size (:data:`assembler.files.limits.MAX_MJCF_BYTES`);
 - that it has no document type declaration: a DTD is where XML entities are declared, and both
   entity expansion ("billion laughs") and external entities (which read other local files) start
   there. MJCF never needs one;
 - that every file it pulls in while parsing (``<include file>``, ``<model file>``) stays in the
-  allowed folders and passes the same checks, to :data:`assembler.limits.MAX_MJCF_INCLUDE_DEPTH`.
+  allowed folders and passes the same checks, to :data:`assembler.files.limits.MAX_MJCF_INCLUDE_DEPTH`.
 
 Meshes and textures are read later, at compile time; :mod:`assembler.mjcf.source` confines them.
 """
@@ -20,8 +20,8 @@ from collections.abc import Collection
 from pathlib import Path
 
 from assembler.errors import MjcfError
-from assembler.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
-from assembler.paths import confine, display_path
+from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
+from assembler.files.paths import confine, display_path
 
 FILE_ELEMENTS: tuple[str, ...] = ("include", "model", "flexcomp")
 """Elements whose ``file`` MuJoCo reads while parsing the XML (meshes and textures are read at

@@ -15,10 +15,10 @@ from dataclasses import dataclass, field
 import mujoco
 
 from assembler.errors import Problem
-from assembler.fieldpath import FieldPath
 from assembler.mjcf.actuators import MOVING, ValueOrigin, add_declared_actuator, followers
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
-from assembler.schema import ActuatorDeclaration
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import ActuatorDeclaration
 
 ACTUATORS = FieldPath(("actuators",))
 FROM_FILE = "mjcf"

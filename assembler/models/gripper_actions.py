@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.schema.gripper_actions import GripperActions
+from assembler.spec.schema.gripper_actions import GripperActions
 
 FloatArray = NDArray[np.float64]
 

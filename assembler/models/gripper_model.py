@@ -9,12 +9,12 @@ from typing import Any, ClassVar
 import numpy as np
 
 from assembler.errors import AssemblerError, Problem
-from assembler.fieldpath import FieldPath
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
 from assembler.models.registering import Registry
-from assembler.schema import GripperSpec
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import GripperSpec
 
 REGISTERED_GRIPPERS: Registry[GripperModel] = Registry("gripper")
 """Every registered gripper class by name."""

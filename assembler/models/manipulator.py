@@ -10,7 +10,6 @@ import mujoco
 import numpy as np
 
 from assembler.errors import AssemblerError, Problem
-from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.models.gripper_model import GripperModel
 from assembler.models.groups import PerArm, arm_side, robosuite_group
@@ -18,6 +17,7 @@ from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
 from assembler.models.robot_model import RobotModel
+from assembler.spec.fieldpath import FieldPath
 
 
 class ManipulatorModel(RobotModel):

@@ -17,10 +17,8 @@ from numpy.typing import NDArray
 
 from assembler.cache.inputs import JointEdit, PartInputs
 from assembler.cache.mesh_swap import compile_from_store
-from assembler.documents import LoadedSpec
-from assembler.documents.validation import reading_order
 from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
-from assembler.fieldpath import FieldPath
+from assembler.files.paths import locate_model_file
 from assembler.mjcf import census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import compile_with_home
@@ -30,8 +28,10 @@ from assembler.models.joint_rules import JointTable
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
 from assembler.models.spec_names import NameCheck
-from assembler.paths import locate_model_file
-from assembler.schema import PartSpec
+from assembler.spec.documents import LoadedSpec
+from assembler.spec.documents.problems import reading_order
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import PartSpec
 from assembler.urdf import load_urdf, locate_urdf_file
 
 FloatArray = NDArray[np.float64]

@@ -16,7 +16,7 @@ import numpy as np
 from assembler.errors import AssemblerError
 from assembler.models.bases import RobotBaseModel
 from assembler.models.part import FloatArray, PartModel
-from assembler.schema import RobotSpec
+from assembler.spec.schema import RobotSpec
 
 
 def euler_to_quat(rpy: FloatArray) -> FloatArray:

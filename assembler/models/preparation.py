@@ -14,7 +14,6 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
-from assembler.fieldpath import FieldPath
 from assembler.mjcf.added_joints import add_free_joint, add_joints
 from assembler.mjcf.joints import joint_attribute, named_joints
 from assembler.mjcf.removal import remove_free_joints, remove_joints
@@ -32,7 +31,8 @@ from assembler.models.joint_rules import (
 )
 from assembler.models.provenance import Provenance
 from assembler.models.spec_names import NameCheck
-from assembler.schema import JOINT_RULE_ATTRIBUTES, PartSpec
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import JOINT_RULE_ATTRIBUTES, PartSpec
 
 SETTABLE_JOINT_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
 """Attributes ``set_joint_attribute`` accepts: the ones whose MJCF origin the assembler tracks."""

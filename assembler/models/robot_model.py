@@ -20,7 +20,7 @@ from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.cache.mesh_swap import compile_from_store
 from assembler.cache.service import Assembly, compile_model, compile_xml
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
-from assembler.fieldpath import FieldPath
+from assembler.files.writing import write_atomically
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import set_joint_attribute_value
@@ -32,8 +32,8 @@ from assembler.models.placement import PlacedPart
 from assembler.models.preparation import SETTABLE_JOINT_ATTRIBUTES, PreparedPart
 from assembler.models.provenance import API
 from assembler.models.registering import Registry
-from assembler.schema import RobotSpec
-from assembler.writing import write_atomically
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import RobotSpec
 
 REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
 """Every registered robot class by name, in registration order."""

@@ -11,8 +11,8 @@ from collections.abc import Iterable, Sequence
 import mujoco
 
 from assembler.errors import Problem, did_you_mean, summarize_names
-from assembler.fieldpath import FieldPath
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
+from assembler.spec.fieldpath import FieldPath
 
 
 class NameCheck:

@@ -16,8 +16,8 @@ from pathlib import Path
 
 import assembler.robosuite  # noqa: F401  (registers the spec robots, as the package's __init__ has)
 from assembler.cli.endings import end_cleanly
-from assembler.robosuite_hook import PTH_LINE
-from assembler.writing import write_atomically
+from assembler.files.writing import write_atomically
+from assembler.robosuite.hook import PTH_LINE
 
 PTH_NAME = "assembler-robosuite.pth"
 

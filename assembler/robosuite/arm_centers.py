@@ -16,7 +16,7 @@ import mujoco
 
 from assembler.errors import AssemblerWarning
 from assembler.models import ManipulatorModel
-from assembler.robosuite_terms import arm_center_site
+from assembler.robosuite.conventions import arm_center_site
 
 
 def arms_without_center(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:

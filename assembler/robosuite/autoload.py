@@ -17,12 +17,12 @@ import os
 import warnings
 from pathlib import Path
 
-from assembler.assembly import DEFAULT
-from assembler.catalog import register_specs, with_overrides
 from assembler.errors import AssemblerWarning, RegistryError
-from assembler.experiment import build_experiment, read_experiment
 from assembler.models import ManipulatorModel, PartModel
+from assembler.registry.catalog import register_specs, with_overrides
+from assembler.registry.instances import DEFAULT
 from assembler.robosuite.registries import install, offered
+from assembler.worlds.experiment import build_experiment, read_experiment
 
 SPECS_VARIABLE = "ASSEMBLER_ROBOSUITE_SPECS"
 EXPERIMENT_VARIABLE = "ASSEMBLER_ROBOSUITE_EXPERIMENT"

@@ -24,9 +24,9 @@ import robosuite
 from robosuite.controllers.composite import composite_controller_factory as factory
 
 from assembler.errors import SpecError
-from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, ManipulatorModel
-from assembler.robosuite_terms import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
+from assembler.robosuite.conventions import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
+from assembler.spec.fieldpath import FieldPath
 
 CONTROLLER = FieldPath(("robosuite", "controller"))
 

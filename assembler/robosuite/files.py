@@ -9,7 +9,7 @@ import tempfile
 from pathlib import Path
 
 from assembler.cache.settings import cache_dir
-from assembler.writing import write_atomically
+from assembler.files.writing import write_atomically
 
 FOLDER = "robosuite"
 """Below the cache folder."""

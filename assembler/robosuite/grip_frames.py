@@ -19,7 +19,7 @@ import mujoco
 
 from assembler.errors import AssemblerWarning
 from assembler.models import GripperModel
-from assembler.robosuite_terms import EEF, GRIP_CYLINDER, GRIP_SENSORS, GRIP_SITE, grip_sensors
+from assembler.robosuite.conventions import EEF, GRIP_CYLINDER, GRIP_SENSORS, GRIP_SITE, grip_sensors
 
 FT_FRAME = "ft_frame"
 

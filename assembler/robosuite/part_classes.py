@@ -18,10 +18,10 @@ from robosuite.models.bases import LegBaseModel, MobileBaseModel, MountModel, Nu
 from robosuite.models.grippers import GripperModel as RobosuiteGripper
 
 from assembler.errors import SpecError
-from assembler.fieldpath import FieldPath
 from assembler.models import GripperModel, PartModel, RobotBaseModel
 from assembler.models.part import FloatArray
 from assembler.robosuite.parts import part_file, robosuite_variant
+from assembler.spec.fieldpath import FieldPath
 
 BASE_CLASSES: dict[str, type] = {
     "mount": MountModel,

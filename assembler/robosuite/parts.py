@@ -17,16 +17,16 @@ from typing import Any, TypeVar
 import mujoco
 
 from assembler.errors import AssemblerWarning, SpecError
-from assembler.fieldpath import FieldPath
 from assembler.mjcf.inertia_groups import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.arm_centers import add_arm_centers
+from assembler.robosuite.conventions import DRIVEN_GROUPS, driven_actuators, robot_type_name
 from assembler.robosuite.files import written_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.robosuite.lossless import lossless_xml
-from assembler.robosuite_terms import DRIVEN_GROUPS, driven_actuators, robot_type_name
+from assembler.spec.fieldpath import FieldPath
 
 P = TypeVar("P", bound=PartModel)
 

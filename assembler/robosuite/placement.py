@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from assembler.schema.expressions import evaluate_expression
-from assembler.schema.robot import Offset3
+from assembler.spec.schema.expressions import evaluate_expression
+from assembler.spec.schema.robot import Offset3
 
 DEFAULT_OFFSETS: dict[str, dict[str, Offset3]] = {
     "single": {

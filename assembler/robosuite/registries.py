@@ -6,7 +6,7 @@ attribute (``robosuite.models.grippers.PandaGripper``). A spec whose name robosu
 (our specs of robosuite's own robots, or a user's "Panda") enters only when replacement is asked
 for; otherwise registering it is an error that names both. Replacements are logged in one line and
 listed by :func:`replaced`. Robots of robosuite's names keep robosuite's Robot class (GR1 is a
-LeggedRobot); new names get theirs from :mod:`assembler.robosuite_terms`.
+LeggedRobot); new names get theirs from :mod:`assembler.robosuite.conventions`.
 """
 
 from __future__ import annotations
@@ -24,12 +24,12 @@ from robosuite.models.robots.robot_model import REGISTERED_ROBOTS
 from robosuite.robots import ROBOT_CLASS_MAPPING
 
 from assembler.errors import Problem, RegistryError
-from assembler.fieldpath import FieldPath
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotBaseModel
 from assembler.robosuite.controllers import CONFIGS
+from assembler.robosuite.conventions import robot_type_name
 from assembler.robosuite.part_classes import robosuite_class_of
 from assembler.robosuite.robot_class import robot_class
-from assembler.robosuite_terms import robot_type_name
+from assembler.spec.fieldpath import FieldPath
 
 LOG = logging.getLogger("assembler.robosuite")
 NAME = FieldPath(("name",))

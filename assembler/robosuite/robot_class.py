@@ -21,15 +21,15 @@ from robosuite.models.robots.manipulators.manipulator_model import ManipulatorMo
 from robosuite.models.robots.robot_model import RobotModelMeta
 
 from assembler.errors import AssemblerError, SpecError
-from assembler.fieldpath import FieldPath
 from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
+from assembler.robosuite.conventions import base_in_robosuite
 from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
 from assembler.robosuite.placement import offsets
 from assembler.robosuite.same_names import check_same_names
-from assembler.robosuite_terms import base_in_robosuite
-from assembler.schema.expressions import ExpressionError
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)
 

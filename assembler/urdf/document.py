@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
-from assembler.paths import confine, display_path, is_file
+from assembler.files.paths import confine, display_path, is_file
 from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 

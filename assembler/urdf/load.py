@@ -18,11 +18,7 @@ from pathlib import Path
 import mujoco
 
 from assembler.errors import MissingPackageError, MjcfError
-from assembler.mjcf import mujoco_warnings
-from assembler.mjcf.authored import Authored
-from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource
-from assembler.mjcf.xml_guard import check_mjcf
-from assembler.paths import (
+from assembler.files.paths import (
     PACKAGE_SCHEME,
     allowed_folders,
     confine,
@@ -32,6 +28,10 @@ from assembler.paths import (
     locate_model_file,
     package_root,
 )
+from assembler.mjcf import mujoco_warnings
+from assembler.mjcf.authored import Authored
+from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource
+from assembler.mjcf.xml_guard import check_mjcf
 from assembler.urdf.document import FORCED_COMPILER, UrdfDocument, read_urdf
 from assembler.urdf.meshes import converted_dir
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri

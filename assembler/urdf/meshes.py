@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from assembler.cache.settings import cache_dir
-from assembler.extras import install_command
+from assembler.files.extras import install_command
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
 """Mesh formats MuJoCo reads itself."""

@@ -11,7 +11,7 @@ packages are installed, in this order (the first folder that holds the file wins
    ``<site-packages>/cmeel.prefix/share/NAME`` (cmeel wheels such as ``example-robot-data``).
 
 The folder found is the package's home: its files may be read, nothing outside it
-(:func:`assembler.paths.confine`).
+(:func:`assembler.files.paths.confine`).
 """
 
 from __future__ import annotations
@@ -24,8 +24,8 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
 
-from assembler.extras import install_command
-from assembler.paths import is_file
+from assembler.files.extras import install_command
+from assembler.files.paths import is_file
 
 PACKAGE_SCHEME = "package://"
 

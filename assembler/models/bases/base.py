@@ -9,7 +9,6 @@ import mujoco
 import numpy as np
 
 from assembler.errors import Problem
-from assembler.fieldpath import FieldPath
 from assembler.mjcf import census
 from assembler.mjcf.census import Census
 from assembler.models.groups import robosuite_group
@@ -17,7 +16,8 @@ from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
 from assembler.models.registering import Registry
-from assembler.schema import BaseSpec
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import BaseSpec
 
 REGISTERED_BASES: Registry[RobotBaseModel] = Registry("base")
 """Every registered base class by name."""

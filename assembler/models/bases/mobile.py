@@ -8,13 +8,13 @@ from typing import ClassVar
 import mujoco
 
 from assembler.errors import Problem
-from assembler.fieldpath import FieldPath
 from assembler.mjcf import compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import free_joints
 from assembler.models.bases.base import RobotBaseModel
 from assembler.models.part import FloatArray
 from assembler.models.preparation import PreparedPart
+from assembler.spec.fieldpath import FieldPath
 
 
 class MobileBaseModel(RobotBaseModel):

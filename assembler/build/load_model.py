@@ -1,0 +1,67 @@
+"""``assembler.load_model``: a robot's compiled model in as little time as MuJoCo's own load of it.
+
+A request made before in this environment is answered from the compiled-model cache through its
+request record (:mod:`assembler.cache.repeat`) without importing the schema or reading any spec;
+anything else takes the full path (``assemble(...).get_model()``) and records the request for
+next time. This module imports only the cache layer and MuJoCo: that is what keeps a warm load
+close to ``mujoco.MjModel.from_binary_path`` of the cached file.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import mujoco
+
+from assembler.cache.repeat import answered_model
+
+DEFAULT = "default"
+"""The robot spec's default base or gripper (as :func:`assembler.assemble` takes it)."""
+
+
+def _plain(overrides: Any) -> Any:
+    """Overrides as plain data for the request (a mapping or a list of ``PATH=VALUE`` strings);
+    anything else is kept as it is, which makes the request unrecordable, never wrong."""
+    if isinstance(overrides, Mapping):
+        return {str(key): value for key, value in overrides.items()}
+    if isinstance(overrides, (list, tuple)) and all(isinstance(item, str) for item in overrides):
+        return list(overrides)
+    return overrides
+
+
+def load_model(
+    robot: str,
+    idn: int | str = 0,
+    base: str | None = DEFAULT,
+    grippers: Mapping[str, str | None] | None = None,
+    overrides: Any = None,
+    cache: bool = True,
+    specs: Sequence[str | Path] = (),
+) -> mujoco.MjModel:
+    """The compiled model of ``assemble(robot, idn, base, grippers, overrides).get_model()``.
+
+    ``robot`` is a registered name or a spec file; ``specs`` are spec folders to register first
+    (the CLI's ``--specs``). A request answered before in this environment is loaded from the
+    cache without reading any spec, as long as every spec file, spec folder and model input it
+    was made from is unchanged; ``cache=False`` compiles (and records nothing).
+    """
+    robot_is_file = robot.endswith((".yaml", ".yml")) or Path(robot).is_file()
+    request = {
+        "kind": "load_model",
+        "robot": str(Path(robot).resolve()) if robot_is_file else robot,
+        "idn": idn,
+        "base": base,
+        "grippers": dict(grippers) if grippers is not None else None,
+        "overrides": _plain(overrides),
+        "specs": [str(Path(folder).resolve()) for folder in specs],
+    }
+    if cache:
+        model = answered_model(request)
+        if model is not None:
+            return model
+    # The slow path reads specs: imported only now, so a repeated request never pays for it.
+    slow = importlib.import_module("assembler.build.request")
+    return slow.load_and_record(request, robot, idn, base, grippers, overrides, specs, cache)

@@ -1,0 +1,3 @@
+"""Files in and out: where files are and which may be read (:mod:`.paths`, :mod:`.repositories`),
+bounds on untrusted input (:mod:`.limits`), what to install for a package (:mod:`.extras`), and
+writing the user's outputs (:mod:`.writing`)."""

@@ -1,0 +1,126 @@
+"""Writing the user's files: atomically, with their usual permissions, every failure one line.
+
+A failed build must never leave a partial file or clobber the user's previous output, so every
+file is written to a temporary file in the target folder and moved into place with one rename.
+A file system error (no permission, disk full, a folder in the way, a name too long) is an
+:class:`AssemblerError` naming the path; the old file, if any, is left as it was.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+from assembler.errors import AssemblerError
+from assembler.files.paths import display_path
+
+TEMPORARY_NAME_STEM = 64
+"""Characters of the target's name kept in its temporary file's name: any name legal for the
+target (up to 255 bytes) then gives a legal temporary name too."""
+
+SHOWN_PATH = 200
+"""Characters of an over-long path shown in a message (its start and its end)."""
+
+
+def _current_umask() -> int:
+    mask = os.umask(0o022)  # reading the umask means setting it; put it back at once
+    os.umask(mask)
+    return mask
+
+
+def _mode_for(path: Path) -> int:
+    """An overwritten file keeps its permissions; a new one gets what ``open()`` would give it."""
+    try:
+        return path.stat().st_mode & 0o777
+    except FileNotFoundError:
+        return 0o666 & ~_current_umask()
+
+
+def shown(path: Path) -> str:
+    """The path for a message: as :func:`display_path` gives it, its middle cut when it is very long."""
+    text = display_path(path)
+    if len(text) <= SHOWN_PATH:
+        return text
+    half = SHOWN_PATH // 2
+    return f"{text[:half]}...({len(text)} characters)...{text[-half:]}"
+
+
+@contextlib.contextmanager
+def cannot_write(path: Path) -> Iterator[None]:
+    """Turn a file system error inside the block into one line naming ``path``."""
+    try:
+        yield
+    except OSError as error:
+        reason = error.strerror or str(error)
+        if isinstance(error, (FileExistsError, NotADirectoryError)):  # mkdir where a file is
+            reason = "a folder on its path is a file"
+        raise AssemblerError(f"cannot write {shown(path)}: {reason}") from None
+
+
+def make_folder(path: Path) -> None:
+    """Create ``path`` and its parents if needed; a failure is one line naming it."""
+    with cannot_write(path):
+        path.mkdir(parents=True, exist_ok=True)
+
+
+@contextlib.contextmanager
+def undone_on_failure(folder: Path) -> Iterator[list[Path]]:
+    """Yield a list for the files the block creates; if the block fails, those files and the
+    folders up to ``folder`` that did not exist before are removed (a failed bundle leaves nothing)."""
+    missing = [parent for parent in (folder, *folder.parents) if not parent.exists()]
+    created: list[Path] = []
+    try:
+        yield created
+    except BaseException:
+        for path in created:
+            with contextlib.suppress(OSError):
+                path.unlink()
+        for parent in missing:  # deepest first
+            with contextlib.suppress(OSError):
+                parent.rmdir()  # only if empty: never someone else's files
+        raise
+
+
+def _temporary(target: Path) -> tuple[int, str]:
+    prefix = f".{target.name[:TEMPORARY_NAME_STEM]}."
+    return tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=target.parent)
+
+
+def _write_replacing(path: Path, data: bytes) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = _temporary(path)
+    try:
+        os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+
+
+def write_atomically(path: Path, content: str | bytes) -> None:
+    """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half."""
+    data = content.encode() if isinstance(content, str) else content
+    with cannot_write(path):
+        _write_replacing(path, data)
+
+
+def copy_atomically(source: Path, target: Path) -> None:
+    """Copy ``source`` to ``target`` the same way (a failure names ``target``)."""
+    with cannot_write(target):
+        handle, temporary = _temporary(target)
+        try:
+            os.fchmod(handle, _mode_for(target))
+            os.close(handle)
+            shutil.copyfile(source, temporary)
+            os.replace(temporary, target)
+        except BaseException:
+            Path(temporary).unlink(missing_ok=True)
+            raise

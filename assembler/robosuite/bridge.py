@@ -1,0 +1,82 @@
+"""The bridge itself: imports robosuite, then registers our specs with it (see :mod:`assembler.robosuite`).
+
+Importing this module imports robosuite, then registers each shipped spec whose name robosuite does
+not use itself, then the spec folders and experiment file named by ``ASSEMBLER_ROBOSUITE_SPECS``
+and ``ASSEMBLER_ROBOSUITE_EXPERIMENT``. Our specs of robosuite's own robots, grippers and bases
+enter only when asked: ``replace_robosuite()`` (robosuite's test plugin does this). What reaches the
+simulator is our assembly, emitted so that robosuite's XML layer reads it without loss
+(``docs/robosuite.md``).
+"""
+
+from __future__ import annotations
+
+try:
+    import robosuite  # noqa: F401  (robosuite's registries must exist before we write to them)
+except ImportError as error:  # pragma: no cover - depends on the installation
+    raise ImportError(
+        f"assembler.robosuite needs robosuite ({error}); install it with: pip install -e '.[robosuite]'"
+    ) from None
+
+import assembler.registry.catalog  # noqa: F401  (registers the shipped specs on first import)
+from assembler.errors import Problem, RegistryError, did_you_mean
+from assembler.models import REGISTRIES, PartModel
+from assembler.robosuite.autoload import register, register_experiment, register_from_environment
+from assembler.robosuite.controllers import CONFIGS
+from assembler.robosuite.registries import TABLES, install, installed, offered, replaced, robosuite_has
+from assembler.robosuite.registries import family_of as _family_of
+
+__all__ = ["register", "register_experiment", "registered", "replace_robosuite", "replaced"]
+
+
+def _shipped() -> list[type[PartModel]]:
+    return [cls for table in REGISTRIES.values() for cls in table.values() if _enters_robosuite(cls)]
+
+
+def _enters_robosuite(cls: type[PartModel]) -> bool:
+    if not offered(cls):
+        return False
+    try:
+        return not robosuite_has(_family_of(cls), cls.__name__)
+    except RegistryError:  # robots without arms have no place in robosuite
+        return False
+
+
+def replace_robosuite(names: list[str] | None = None) -> list[str]:
+    """Replace robosuite's own robots, grippers and bases by our specs of the same names (all of them
+    when ``names`` is None); returns the names replaced."""
+    classes = [
+        cls
+        for table in REGISTRIES.values()
+        for name, cls in table.items()
+        if (names is None or name in names) and robosuite_has(_family_of(cls), name)
+    ]
+    unknown = sorted(set(names or []) - {cls.__name__ for cls in classes})
+    if unknown:
+        raise RegistryError([Problem(_why_not_replaced(name)) for name in unknown])
+    return install(classes, replace=True)
+
+
+def _why_not_replaced(name: str) -> str:
+    """Why ``replace_robosuite`` cannot replace ``name``: not robosuite's, or no spec of that name."""
+    specs = {spec_name for table in REGISTRIES.values() for spec_name in table}
+    robosuites = {
+        str(other) for family in TABLES for other in TABLES[family][0] if robosuite_has(family, str(other))
+    }
+    if name in specs:
+        return (
+            f"replace_robosuite: {name} is not robosuite's; robosuite finds our {name} by that name already"
+        )
+    if name in robosuites:
+        return f"replace_robosuite: robosuite's {name} has no spec of that name to replace it"
+    hint = did_you_mean(name, specs & robosuites)
+    return f"replace_robosuite: neither robosuite nor the specs know {name}.{hint}"
+
+
+def registered() -> dict[str, list[str]]:
+    """Per family (robot, gripper, base), the names robosuite resolves to our specs."""
+    return {family: installed(family) for family in ("robot", "gripper", "base")}
+
+
+CONFIGS.install()
+install(_shipped())
+register_from_environment()

@@ -1,0 +1,50 @@
+"""Pydantic models of every spec format. No MuJoCo and no file I/O here: only shapes and rules."""
+
+from assembler.spec.schema.actuators import ActuatorDeclaration, ActuatorType
+from assembler.spec.schema.base_spec import BaseSpec, BaseType
+from assembler.spec.schema.common import FiniteFloat, StrictModel, Vec3, Vec4
+from assembler.spec.schema.experiment import ExperimentRobot, ExperimentSpec
+from assembler.spec.schema.gripper import GripperSpec
+from assembler.spec.schema.joints import (
+    JOINT_RULE_ATTRIBUTES,
+    OVERRIDABLE_ATTRIBUTES,
+    InverseIndexRule,
+    JointDefaults,
+    JointOverride,
+    JointRule,
+)
+from assembler.spec.schema.parts import PartSpec
+from assembler.spec.schema.robot import GROUPS, Arm, GripperMount, JointGroups, RobotSpec
+from assembler.spec.schema.scene import SceneRobot, SceneSpec
+
+SPEC_KINDS: dict[str, type[PartSpec]] = {"robot": RobotSpec, "base": BaseSpec, "gripper": GripperSpec}
+"""The model of each part spec's ``kind`` (robot specs may leave ``kind`` out)."""
+
+__all__ = [
+    "GROUPS",
+    "JOINT_RULE_ATTRIBUTES",
+    "OVERRIDABLE_ATTRIBUTES",
+    "SPEC_KINDS",
+    "ActuatorDeclaration",
+    "ActuatorType",
+    "Arm",
+    "BaseSpec",
+    "BaseType",
+    "ExperimentRobot",
+    "ExperimentSpec",
+    "FiniteFloat",
+    "GripperMount",
+    "GripperSpec",
+    "InverseIndexRule",
+    "JointDefaults",
+    "JointGroups",
+    "JointOverride",
+    "JointRule",
+    "PartSpec",
+    "RobotSpec",
+    "SceneRobot",
+    "SceneSpec",
+    "StrictModel",
+    "Vec3",
+    "Vec4",
+]

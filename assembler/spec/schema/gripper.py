@@ -1,0 +1,57 @@
+"""The gripper spec: a hand attached at an arm's end-effector body."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from assembler.spec.schema.common import NonNegativeFloat
+from assembler.spec.schema.gripper_actions import GripperActions
+from assembler.spec.schema.parts import PartSpec
+
+
+def _default_sites() -> dict[str, str]:
+    return {"grip_site": "grip_site", "grip_cylinder": "grip_site_cylinder"}
+
+
+def _default_sensors() -> dict[str, str]:
+    return {"force_ee": "force_ee", "torque_ee": "torque_ee"}
+
+
+class GripperSpec(PartSpec):
+    """A gripper or hand: its MJCF (one root body, an `eef` body at the grip point) and its semantics."""
+
+    kind: Literal["gripper"]
+    """Marks a gripper spec."""
+
+    eef_body: str = "eef"
+    """The body at the grip point, whose frame defines the gripper's rotation offset."""
+
+    dof: int | None = Field(default=None, ge=0)
+    """Number of actions the gripper takes; null: the number of ``actions`` (or of actuators without them)."""
+
+    actions: GripperActions | None = None
+    """How a policy's actions drive the actuators (robosuite's format_action); null: none declared, which
+    robosuite refuses for a gripper with actuators (lint RA703)."""
+
+    speed: NonNegativeFloat = 0.0
+    """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
+    speed)."""
+
+    important_sites: dict[str, str] = Field(default_factory=_default_sites)
+    """Role -> site name; every site must exist in the MJCF."""
+
+    important_geoms: dict[str, list[str]] = Field(default_factory=dict)
+    """Role (e.g. left_fingerpad) -> geom names; every geom must exist in the MJCF."""
+
+    important_sensors: dict[str, str] = Field(default_factory=_default_sensors)
+    """Role -> sensor name; every sensor must exist in the MJCF."""
+
+    @model_validator(mode="after")
+    def _dof_matches_actions(self) -> GripperSpec:
+        if self.actions is not None and self.dof is not None and self.dof != len(self.actions.dimensions):
+            raise ValueError(
+                f"dof is {self.dof} but actions declares {len(self.actions.dimensions)}; drop dof"
+            )
+        return self

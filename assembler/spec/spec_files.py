@@ -1,0 +1,142 @@
+"""Part spec files and folders (robots, bases, grippers) -> validated specs, all problems at once.
+
+A whole folder is loaded together, so specs in it may extend one another in any file order, and
+every problem of every file is reported in one error. The document layer
+(:mod:`assembler.spec.documents`) does the reading, inheritance and validation; this module picks each
+document's model by its ``kind`` and walks folders.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from assembler.errors import AssemblerError, Problem, SpecError
+from assembler.files.paths import confine, display_path
+from assembler.spec.documents import (
+    SPEC_SUFFIXES,
+    LoadedSpec,
+    LocatedDocument,
+    NoParents,
+    Parents,
+    Resolver,
+    parse_yaml,
+    read_document,
+    resolve_path_fields,
+    validate,
+)
+from assembler.spec.fieldpath import FieldPath
+from assembler.spec.schema import SPEC_KINDS, PartSpec
+
+__all__ = ["SPEC_SUFFIXES", "LoadedSpec", "load_documents", "load_paths", "load_string", "spec_files"]
+
+KIND = FieldPath(("kind",))
+
+
+def _validate(document: LocatedDocument) -> LoadedSpec[PartSpec]:
+    kind = document.data.get("kind", "robot")
+    if not isinstance(kind, str) or kind not in SPEC_KINDS:  # a list or a mapping is no kind
+        raise SpecError(
+            document.problem(KIND, f"unknown spec kind '{kind}'; use one of {', '.join(SPEC_KINDS)}")
+        )
+    return validate(document, SPEC_KINDS[kind])
+
+
+def spec_files(folder: Path) -> list[Path]:
+    """Every spec file below ``folder``, in a stable order."""
+    return sorted(p for p in folder.rglob("*") if p.suffix in SPEC_SUFFIXES and p.is_file())
+
+
+def load_documents(
+    documents: Iterable[LocatedDocument], parents: Parents | None = None
+) -> list[LoadedSpec[PartSpec]]:
+    """Resolve inheritance and validate a batch of parsed documents; all problems in one error."""
+    documents = list(documents)
+    batch = {d.data["name"]: d for d in documents if isinstance(d.data.get("name"), str)}
+    resolver = Resolver(batch, parents or NoParents(), read_document)
+    loaded: list[LoadedSpec[PartSpec]] = []
+    problems: list[Problem] = []
+    for document in documents:
+        try:
+            loaded.append(_validate(resolver.resolve(document)))
+        except AssemblerError as error:
+            seen = {p.message for p in problems}
+            problems.extend(p for p in error.problems if p.message not in seen)
+    if problems:
+        raise SpecError(problems)
+    return loaded
+
+
+PLACEMENT_KINDS: tuple[str, ...] = ("scene", "experiment")
+"""Kinds of spec file that place registered robots rather than describe a part."""
+
+
+@dataclass
+class SpecFiles:
+    """The spec files found in some files and folders, read with positions."""
+
+    parts: list[LocatedDocument] = field(default_factory=list)
+    """Robots, bases and grippers."""
+
+    placements: list[LocatedDocument] = field(default_factory=list)
+    """Scenes and experiments (found in folders, or given)."""
+
+    problems: list[Problem] = field(default_factory=list)
+    """Files that could not be read."""
+
+
+def read_spec_files(paths: Iterable[str | Path]) -> SpecFiles:
+    """Every spec file in ``paths`` (files, and folders recursively), read but not validated."""
+    found = SpecFiles()
+    problems = found.problems
+    for given in paths:
+        path = Path(given)
+        if path.is_dir():
+            files = spec_files(path)
+        elif path.exists():
+            files = [path]
+        else:
+            problems.append(Problem(f"no such file or folder: {display_path(path)}"))
+            continue
+        for file in files:
+            try:
+                if file is not path:  # found in a folder: a link must not lead out of it
+                    confine(file, [path], "spec file ")
+                document = read_document(file)
+            except AssemblerError as error:
+                problems.extend(error.problems)
+                continue
+            placement = document.data.get("kind") in PLACEMENT_KINDS
+            (found.placements if placement else found.parts).append(document)
+    return found
+
+
+def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> list[LoadedSpec[PartSpec]]:
+    """Load the part specs in spec files and folders (recursively) together; every problem of every
+    file at once. Scene and experiment files in folders are not parts and are left to their commands."""
+    paths = list(paths)
+    found = read_spec_files(paths)
+    problems = list(found.problems)
+    given = {Path(path).resolve() for path in paths}
+    for document in found.placements:
+        if Path(document.file).resolve() in given:  # named itself, not found in a folder
+            kind = document.data["kind"]
+            problems.append(
+                document.problem(KIND, f"a {kind} file is not a part spec; use `assembler {kind}`")
+            )
+    try:
+        loaded = load_documents(found.parts, parents)
+    except AssemblerError as error:
+        problems.extend(error.problems)
+        loaded = []
+    if problems:
+        raise SpecError(problems)
+    return loaded
+
+
+def load_string(text: str, parents: Parents | None = None, name: str = "<string>") -> LoadedSpec[PartSpec]:
+    """Load one spec from YAML text; relative paths in it are taken from the working directory."""
+    document = parse_yaml(text, name)
+    resolve_path_fields(document)
+    return load_documents([document], parents)[0]

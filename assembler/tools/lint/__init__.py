@@ -1,0 +1,87 @@
+"""``assembler lint``'s checks: problems MuJoCo accepts silently, each a :class:`Finding` with a code.
+
+=====  ========  ===================================================================
+code   severity  finding
+=====  ========  ===================================================================
+RA101  error     parts overlap at the home pose (e.g. a gripper inside its wrist)
+RA201  warning   mass implausible for the geoms' volume (density outside 100..20000)
+RA202  error     zero principal inertia, or an authored inertia that violates A+B>=C
+RA203  warning   inertia larger than any mass inside the body's geoms could give
+RA301  warning   position servo whose ctrlrange reaches outside its joint's range
+RA302  warning   position-driven joint without a range
+RA401  warning   armature from the inverse-index rule shrunk below 0.2
+RA501  error     end-effector body or gripper site/geom/sensor missing from the model
+RA502  warning   gripper with fingers but no left/right_fingerpad geoms declared
+RA503  warning   important geom that cannot collide
+RA504  warning   part with no visual geoms (invisible to robosuite's cameras)
+RA601  error     home keyframe outside a joint's range
+RA701  warning   position servos robosuite's controllers would drive, robosuite.actuation unset
+       error     (or robosuite.actuation torque and a servo without forcerange)
+RA702  info      gripper without robosuite's eef body / grip sites (robosuite gets them at eef_body)
+RA703  warning   gripper with actuators but no actions: (robosuite refuses it)
+RA704  warning   arm without the {arm}_center site robosuite's composite controller reads
+=====  ========  ===================================================================
+
+Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
+from assembler.tools.lint.armature import tiny_index_armature
+from assembler.tools.lint.finding import SEVERITIES, Finding, Severity
+from assembler.tools.lint.important_names import (
+    important_geoms_without_contact,
+    missing_fingerpads,
+    missing_important_names,
+)
+from assembler.tools.lint.keyframe import keyframe_outside_limits
+from assembler.tools.lint.mass import degenerate_inertia, implausible_density, oversized_inertia
+from assembler.tools.lint.penetration import self_penetration
+from assembler.tools.lint.robosuite_grippers import grip_frames_added_for_robosuite, gripper_without_actions
+from assembler.tools.lint.robosuite_robots import missing_arm_centers, servos_robosuite_cannot_drive
+from assembler.tools.lint.target import LintTarget, part_target, robot_target
+from assembler.tools.lint.visibility import invisible_parts
+
+Check = Callable[[LintTarget], Iterator[Finding]]
+
+CHECKS: tuple[Check, ...] = (
+    self_penetration,
+    implausible_density,
+    degenerate_inertia,
+    oversized_inertia,
+    ctrlrange_beyond_joint_range,
+    unlimited_driven_joints,
+    tiny_index_armature,
+    missing_important_names,
+    missing_fingerpads,
+    important_geoms_without_contact,
+    invisible_parts,
+    keyframe_outside_limits,
+    servos_robosuite_cannot_drive,
+    grip_frames_added_for_robosuite,
+    gripper_without_actions,
+    missing_arm_centers,
+)
+"""Every check, in the order of their codes."""
+
+
+def lint(target: LintTarget) -> list[Finding]:
+    """Every finding of every check on ``target``, errors first, then by code."""
+    findings = [finding for check in CHECKS for finding in check(target)]
+    return sorted(findings, key=lambda f: (SEVERITIES.index(f.severity), f.code))
+
+
+__all__ = [
+    "CHECKS",
+    "SEVERITIES",
+    "Check",
+    "Finding",
+    "LintTarget",
+    "Severity",
+    "lint",
+    "part_target",
+    "robot_target",
+]

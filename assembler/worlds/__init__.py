@@ -1,0 +1,2 @@
+"""Several robots or many robots: scenes (:mod:`.scene`), experiments (:mod:`.experiment`) and
+variants of one robot (:mod:`.variants`)."""

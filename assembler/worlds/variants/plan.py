@@ -1,0 +1,158 @@
+"""What to vary and how: grid values and seeded random draws of spec fields, checked before any work.
+
+Variant ``i`` is the robot with its grid point's values and, for ``--random N``, values drawn
+from ``numpy.random.default_rng([seed, i])``: they depend on the seed and the index only, so a
+run is reproducible whatever the number of worker processes.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+import yaml
+
+from assembler.errors import AssemblerError
+from assembler.registry.catalog import check_override_paths, with_overrides
+from assembler.registry.instances import DEFAULT
+from assembler.registry.lookup import robot_class
+from assembler.spec.documents import Override, parse_overrides, parse_path
+
+
+def _flag_error(flag: str, text: str, expected: str) -> AssemblerError:
+    return AssemblerError(f"--{flag} expects {expected}, got '{text}'")
+
+
+@dataclass(frozen=True)
+class Grid:
+    """Every value of one field: ``joint_defaults.damping=0.05,0.1,0.2``."""
+
+    key: str
+    values: tuple[Any, ...]
+
+    @classmethod
+    def parse(cls, text: str) -> Grid:
+        """``PATH=V1,V2,...``; values are YAML, so ``[0.1, 0.2],[0.3, 0.4]`` gives two lists."""
+        key, _, raw = text.partition("=")
+        try:
+            values = yaml.safe_load(f"[{raw}]") if raw.strip() else None
+        except yaml.YAMLError:
+            values = None
+        if not key or not isinstance(values, list) or not values:
+            raise _flag_error("grid", text, "PATH=V1,V2,... (e.g. joint_defaults.damping=0.05,0.1)")
+        return cls(str(parse_path(key, "--grid ")), tuple(values))
+
+
+@dataclass(frozen=True)
+class Draw:
+    """A random value of one field: uniform on [low, high] or normal with a mean and deviation."""
+
+    key: str
+    law: Literal["uniform", "normal"]
+    a: float
+    b: float
+
+    @classmethod
+    def parse(cls, text: str, law: Literal["uniform", "normal"]) -> Draw:
+        """``PATH=LOW:HIGH`` (uniform) or ``PATH=MEAN:STD`` (normal)."""
+        expected = "PATH=LOW:HIGH with LOW <= HIGH" if law == "uniform" else "PATH=MEAN:STD with STD >= 0"
+        key, _, raw = text.partition("=")
+        try:
+            a, b = (float(part) for part in raw.split(":"))
+        except ValueError:
+            raise _flag_error(law, text, expected) from None
+        if not key or not np.isfinite([a, b]).all() or (a > b if law == "uniform" else b < 0):
+            raise _flag_error(law, text, expected)
+        return cls(str(parse_path(key, f"--{law} ")), law, a, b)
+
+    def sample(self, rng: np.random.Generator) -> float:
+        """One value, drawn from ``rng``."""
+        value = rng.uniform(self.a, self.b) if self.law == "uniform" else rng.normal(self.a, self.b)
+        return float(value)
+
+
+@dataclass(frozen=True)
+class VariantPlan:
+    """What to vary and how: everything a worker process needs to build any variant."""
+
+    robot: str
+    """A registered robot name."""
+    idn: int = 0
+    """Instance number of every variant (its names' prefix)."""
+    base: str | None = DEFAULT
+    """The base, as :func:`~assembler.assemble` takes it."""
+    grippers: tuple[tuple[str, str | None], ...] = ()
+    """(arm, gripper) choices, as :func:`~assembler.assemble` takes them."""
+    fixed: tuple[str, ...] = ()
+    """``PATH=VALUE`` overrides given to every variant (``--set``)."""
+    grids: tuple[Grid, ...] = ()
+    """Fields whose values are combined (cartesian product)."""
+    draws: tuple[Draw, ...] = ()
+    """Fields drawn at random for each variant."""
+    random: int | None = None
+    """Random variants per grid point (``--random N``); None when nothing is drawn."""
+    seed: int = 0
+    """Seed of the draws; with the variant's index, it alone decides the variant's values."""
+    spec_paths: tuple[str, ...] = ()
+    """User spec files and folders, registered again in worker processes that do not inherit them
+    (specs registered from strings in this process are not seen by spawned workers)."""
+    cache: bool = True
+    """Whether variants may be answered from the compiled-model cache (``--no-cache``: False)."""
+    store: bool = False
+    """Whether each variant's compiled model is kept in the cache (``--cache``): a sweep's models
+    are rarely asked for again, and each can be tens of megabytes."""
+    jobs: int | None = None
+    """Worker processes (None: one per core)."""
+
+    def __post_init__(self) -> None:
+        keys = [g.key for g in self.grids] + [d.key for d in self.draws]
+        twice = sorted({key for key in keys if keys.count(key) > 1})
+        if twice:
+            raise AssemblerError(f"{', '.join(twice)}: varied by two flags; vary each field once")
+        if self.draws and self.random is None:
+            raise AssemblerError("--uniform/--normal draw values for --random N variants; add --random N")
+        if self.random is not None and (self.random < 1 or not self.draws):
+            raise AssemblerError("--random N needs N >= 1 and at least one --uniform or --normal range")
+        if self.seed < 0 or (self.jobs is not None and self.jobs < 1):
+            raise AssemblerError("--seed must be >= 0 and --jobs >= 1")
+        if not self.grids and not self.draws:
+            raise AssemblerError("nothing to vary: give --grid PATH=V1,V2,... or --random N with ranges")
+
+    @property
+    def count(self) -> int:
+        """Variants per grid point."""
+        return self.random or 1
+
+    def variant_overrides(self) -> list[dict[str, Any]]:
+        """The overrides of every variant, in index order: grid points, then draws within each."""
+        keys = [grid.key for grid in self.grids]
+        variants: list[dict[str, Any]] = []
+        for point in itertools.product(*(grid.values for grid in self.grids)):
+            for _ in range(self.count):
+                rng = np.random.default_rng([self.seed, len(variants)])
+                variants.append(
+                    {**dict(zip(keys, point, strict=True)), **{d.key: d.sample(rng) for d in self.draws}}
+                )
+        return variants
+
+    def flag_of(self, key: str) -> str:
+        """The flag that varies ``key``: ``--grid``, ``--uniform`` or ``--normal``."""
+        laws = {draw.key: f"--{draw.law}" for draw in self.draws}
+        return laws.get(key, "--grid")
+
+    def varied(self) -> list[str]:
+        """The fields the plan varies, grids first."""
+        return [grid.key for grid in self.grids] + [draw.key for draw in self.draws]
+
+    def overrides(self, variant: dict[str, Any]) -> list[Override]:
+        """The fixed overrides, then the variant's (named by the flag that chose each value)."""
+        flags = {g.key: "--grid " for g in self.grids} | {d.key: f"--{d.law} " for d in self.draws}
+        chosen = [Override(parse_path(key), value, flags[key]) for key, value in variant.items()]
+        return [*parse_overrides(self.fixed, "--set "), *chosen]
+
+    def check(self) -> None:
+        """The fixed overrides are valid and every varied path exists (one error before any work)."""
+        cls = with_overrides(robot_class(self.robot), parse_overrides(self.fixed, "--set "))
+        check_override_paths(cls, self.overrides(self.variant_overrides()[0]))

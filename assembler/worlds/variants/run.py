@@ -1,0 +1,170 @@
+"""Building the variants of a plan into a folder, in parallel, with a manifest that never lies.
+
+Every variant is compiled before its file is written (atomically); ``manifest.jsonl`` lists the
+written ones (index, file, sha256, overrides). The folder's previous manifest is removed before
+anything is written and the new one is written once, at the end or when the run is interrupted,
+listing only files this run wrote whole: at no moment does a manifest name a file that is not
+there with its digest. A variant that fails is reported with its overrides while the others are
+still written: one sample outside a field's range should not cost the other 999 models, and the
+exit code still says the sweep is incomplete. Workers exit when the process that started them
+dies, so a killed run leaves no orphans.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import threading
+import time
+from collections.abc import Iterator, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from assembler.errors import AssemblerError, Problem
+from assembler.files.writing import cannot_write, make_folder, write_atomically
+from assembler.registry.catalog import register_specs
+from assembler.registry.instances import assemble
+from assembler.worlds.variants.plan import VariantPlan
+
+MANIFEST = "manifest.jsonl"
+
+ORPHAN_CHECK_SECONDS = 0.5
+"""How often a worker looks whether the process that started it is still there."""
+
+FROM_FILES_AT = 4
+"""Variants per worker from which meshes are read from their files rather than the mesh store:
+MuJoCo's own asset cache keeps meshes read from files processed (hulls, normals, inertia) for the
+process's next compiles, and not those given in memory, so after the first decode each later
+variant compiles in a fraction of the time (Panda: 0.16 s against 0.33 s for compile and XML)."""
+
+
+@dataclass(frozen=True)
+class VariantResult:
+    """One variant: its manifest line when written, or its problems."""
+
+    index: int
+    overrides: dict[str, Any]
+    file: str | None = None
+    sha256: str | None = None
+    problems: tuple[str, ...] = ()
+    seed: int | None = None
+    """The seed of the random draws, if any were made."""
+
+    def manifest_line(self) -> str:
+        """One JSON line: index, file, sha256 of the file's bytes, every override applied (and the seed)."""
+        entry = {"index": self.index, "file": self.file, "sha256": self.sha256, "overrides": self.overrides}
+        if self.seed is not None:
+            entry["seed"] = self.seed
+        return json.dumps(entry, default=str)
+
+
+@dataclass
+class VariantRun:
+    """What a run wrote, which variants failed, and how many different models came out."""
+
+    results: list[VariantResult]
+    no_effect: list[str] = field(default_factory=list)
+    """Varied fields that changed nothing in the compiled model (:mod:`assembler.worlds.variants.effects`)."""
+
+    @property
+    def written(self) -> list[VariantResult]:
+        """The variants whose file was written."""
+        return [result for result in self.results if result.file is not None]
+
+    @property
+    def distinct(self) -> int:
+        """How many different models the written variants are (by their files' digests)."""
+        return len({result.sha256 for result in self.written})
+
+
+def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True) -> str:
+    """The compiled, emitted MJCF of one variant (nothing written); ``meshes`` False reads meshes
+    from their files (see :data:`FROM_FILES_AT`)."""
+    robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=plan.overrides(variant))
+    return robot.get_xml(cache=plan.cache, store=plan.store, meshes=meshes)
+
+
+def build_variant(
+    plan: VariantPlan, index: int, variant: dict[str, Any], folder: Path, meshes: bool = True
+) -> VariantResult:
+    """Assemble, compile and write variant ``index``; problems are returned, not raised."""
+    shown = {change.key: change.value for change in plan.overrides(variant)}
+    seed = plan.seed if plan.draws else None
+    try:
+        xml = variant_xml(plan, variant, meshes)  # compiled first: a variant MuJoCo refuses is never written
+    except AssemblerError as error:
+        return VariantResult(index, shown, problems=tuple(str(p) for p in error.problems), seed=seed)
+    name = f"{plan.robot}_{index:04d}.xml"
+    data = xml.encode()
+    write_atomically(folder / name, data)
+    return VariantResult(index, shown, name, hashlib.sha256(data).hexdigest(), seed=seed)
+
+
+Job = tuple[VariantPlan, int, dict[str, Any], Path, bool]
+
+
+def _build(job: Job) -> VariantResult:
+    return build_variant(*job)
+
+
+def _exit_with_parent(parent: int) -> None:
+    while os.getppid() == parent:
+        time.sleep(ORPHAN_CHECK_SECONDS)
+    os._exit(1)  # the run that wanted this work is gone
+
+
+def _start_worker(spec_paths: Sequence[str], parent: int) -> None:
+    """Worker start: follow the parent, and register the user's specs (idempotent when forked)."""
+    threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True, name="orphan-guard").start()
+    for path in spec_paths:
+        register_specs(path)
+
+
+def _results(plan: VariantPlan, work: list[Job], workers: int) -> Iterator[VariantResult]:
+    if workers <= 1:
+        yield from map(_build, work)
+        return
+    with ProcessPoolExecutor(
+        workers, initializer=_start_worker, initargs=(plan.spec_paths, os.getpid())
+    ) as pool:
+        yield from pool.map(_build, work, chunksize=max(1, len(work) // (4 * workers)))
+
+
+def write_manifest(folder: Path, results: Sequence[VariantResult]) -> None:
+    """The manifest of the written variants, in index order, written atomically."""
+    lines = [
+        result.manifest_line() for result in sorted(results, key=lambda r: r.index) if result.file is not None
+    ]
+    write_atomically(folder / MANIFEST, "".join(line + "\n" for line in lines))
+
+
+def run_variants(plan: VariantPlan, folder: str | Path) -> list[VariantResult]:
+    """Build every variant into ``folder``; the manifest lists what was written, even when interrupted."""
+    plan.check()
+    target = Path(folder)
+    make_folder(target)
+    with cannot_write(target / MANIFEST):
+        (target / MANIFEST).unlink(missing_ok=True)  # the earlier run's: its files are about to change
+    variants = plan.variant_overrides()
+    workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(variants)))
+    from_store = len(variants) < FROM_FILES_AT * workers
+    work = [(plan, index, variant, target, from_store) for index, variant in enumerate(variants)]
+    results: list[VariantResult] = []
+    try:
+        for result in _results(plan, work, workers):
+            results.append(result)
+    finally:
+        write_manifest(target, results)
+    return results
+
+
+def failures(results: Sequence[VariantResult]) -> list[Problem]:
+    """One problem per failed variant's problem, naming the variant and its overrides."""
+    problems: list[Problem] = []
+    for result in results:
+        values = ", ".join(f"{k}={json.dumps(v, default=str)}" for k, v in result.overrides.items())
+        problems += [Problem(f"{p}", None, f"variant {result.index} ({values})") for p in result.problems]
+    return problems
