@@ -5,7 +5,7 @@ uses and returns a spec whose one mesh holds the decoded arrays: vertices, norma
 coordinates and faces, before any of the compiler's processing (scaling, centring, alignment,
 normals it computes). Written as ``.msh`` and handed to the compiler under the mesh's own file name
 with ``content_type="model/vnd.mujoco.msh"``, they compile to a model identical in every byte of
-``mj_saveModel`` (tests/test_mesh_store.py): every mesh attribute (``scale``, ``refpos``,
+``mj_saveModel`` (tests/cache/test_mesh_store.py): every mesh attribute (``scale``, ``refpos``,
 ``refquat``, ``inertia``, ``maxhullvert``, ``smoothnormal``) still applies, and the model's asset
 paths still name the original file. Nothing here parses OBJ or STL text.
 

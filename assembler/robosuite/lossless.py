@@ -11,7 +11,7 @@ So the part's spec is written with no class at all (every element in ``main``, `
 MuJoCo's built-in defaults: every non-built-in value becomes a literal), joint parameters always
 written, numbers with 17 digits, and the authored poses, sizes, ``fromto`` and meshes put back into
 the text after MuJoCo's writer. Tested: robosuite compiles each shipped part read this way to our
-model, field by field (``tests/test_robosuite_lossless.py``).
+model, field by field (``tests/robosuite/test_lossless.py``).
 """
 
 from __future__ import annotations

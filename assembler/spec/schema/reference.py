@@ -17,7 +17,7 @@ HEADER = """\
 # Spec reference
 
 <!-- Generated from the schema's field docstrings by `assembler schema --markdown > docs/spec.md`.
-     Do not edit by hand: tests/test_schema_docs.py keeps it in sync. -->
+     Do not edit by hand: tests/spec/test_schema_docs.py keeps it in sync. -->
 
 A spec file is one YAML mapping; unknown keys are errors. `kind` says what the file describes
 (a robot when it is absent). A spec that `extends` another needs only `name` (and `kind`): the

@@ -17,7 +17,7 @@ from assembler.cli import build_parser, main
 from assembler.cli.report import github_annotation
 from assembler.errors import Location
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).parents[2]
 Write = Callable[[str, str], Path]
 
 PROBE_MJCF = """\

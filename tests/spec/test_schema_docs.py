@@ -14,7 +14,7 @@ from assembler.cli import main
 from assembler.spec.schema.json_schema import REFERENCE_FILE, SCHEMA_FILE, schema_text, spec_json_schema
 from assembler.spec.schema.reference import markdown_reference, type_text
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).parents[2]
 SHIPPED_SPECS = sorted((ROOT / "specs").rglob("*.yaml"))
 SCHEMA_LINE = re.compile(r"# yaml-language-server: \$schema=(\S+)$")
 

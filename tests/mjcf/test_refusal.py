@@ -15,7 +15,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError
-from tests.semantics_robots import skin_file
+from tests.models.semantics_robots import skin_file
 
 ASSET, BODY, SECTIONS = "ASSET", "BODY", "SECTIONS"
 """Where a case puts its one element: among the assets, in the innermost body, at the end of the file."""

@@ -1,4 +1,4 @@
-"""Valid robot MJCF files with varied features, for tests/test_semantics_preservation.py.
+"""Valid robot MJCF files with varied features, for tests/models/test_semantics_preservation.py.
 
 Each file is one arm (a static root, three hinged links and a tip) with the features of its case
 filled into named slots: every actuator type and transmission, fixed and spatial tendons, every

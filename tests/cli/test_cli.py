@@ -190,7 +190,7 @@ def test_list_bases_and_grippers(capsys: pytest.CaptureFixture[str]) -> None:
 
 def test_scene_places_robots_with_unique_names(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     out = tmp_path / "scene.xml"
-    scene = Path(__file__).parent.parent / "scenes" / "two_arms.yaml"
+    scene = Path(__file__).parents[2] / "scenes" / "two_arms.yaml"
     code, _, err = run(capsys, "scene", str(scene), "-o", str(out))
     assert code == 0 and "Sparrow70, Finch61" in err
     model = mujoco.MjModel.from_xml_path(str(out))

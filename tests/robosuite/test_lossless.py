@@ -22,7 +22,7 @@ from assembler.robosuite.part_classes import robosuite_class_of  # noqa: E402
 from assembler.robosuite.parts import robosuite_variant  # noqa: E402
 from assembler.robosuite.registries import family_of, offered  # noqa: E402
 from assembler.robosuite.robot_class import robot_class  # noqa: E402
-from tests.bridge.exact import differences  # noqa: E402
+from tests.robosuite.exact import differences  # noqa: E402
 
 PARTS = sorted(
     (family, name)

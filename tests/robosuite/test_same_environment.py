@@ -51,7 +51,7 @@ MOUNT_RENAMED = {
 
 def _record(side: str, env: str, robots: str, out: Path) -> tuple[mujoco.MjModel, dict[str, np.ndarray]]:
     environment = {**os.environ, "MUJOCO_GL": "egl", "PYTHONPATH": str(ROOT)}
-    command = [sys.executable, "-m", "tests.bridge.record_env", side, env, robots, str(STEPS), str(out)]
+    command = [sys.executable, "-m", "tests.robosuite.record_env", side, env, robots, str(STEPS), str(out)]
     done = subprocess.run(command, cwd=ROOT, env=environment, capture_output=True, text=True, check=False)
     assert done.returncode == 0, f"{side} {env} {robots}:\n{done.stderr[-3000:]}"
     with np.load(f"{out}.npz") as recorded:

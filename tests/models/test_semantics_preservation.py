@@ -20,7 +20,7 @@ import pytest
 import assembler
 from assembler.mjcf.versions import mujoco_at_least
 from assembler.models.part import COLLISION_GROUP, PartModel
-from tests.semantics_robots import CASES, CUBE_OBJ, SLEEVE_SKN, robot_mjcf
+from tests.models.semantics_robots import CASES, CUBE_OBJ, SLEEVE_SKN, robot_mjcf
 
 PREFIX = "robot0_"
 

@@ -26,7 +26,7 @@ from assembler.urdf.document import read_urdf
 from assembler.urdf.meshes import converted_dir, converter_available, importable
 from assembler.urdf.packages import package_folders
 from assembler.urdf.postprocess import add_mimics
-from tests.urdf_fixtures import ARM_URDF, line_of, write_package, write_stl
+from tests.urdf.fixtures import ARM_URDF, line_of, write_package, write_stl
 
 STL_LINE = line_of(ARM_URDF, "cube.stl")
 DAE_LINE = line_of(ARM_URDF, "cube.dae")

@@ -16,7 +16,7 @@ from assembler.errors import MjcfError, RegistryError, SpecError
 from assembler.files.paths import ALLOW_VARIABLE, shipped_assets_dir, shipped_specs_dir
 from assembler.registry.lookup import REGISTERED_ROBOTS
 from tests.conftest import TWO_LINK_MJCF
-from tests.test_paths_confinement import MESH_MJCF, OUTSIDE, TETRA
+from tests.files.test_confinement import MESH_MJCF, OUTSIDE, TETRA
 
 Write = Callable[[str, str], Path]
 

@@ -18,7 +18,7 @@ from assembler import cache
 from assembler.cache import wait_for_writes
 from assembler.urdf.meshes import converted_dir, converter_available, importable
 from tests.conftest import use_private_cache
-from tests.urdf_fixtures import ARM_URDF, write_package, write_stl
+from tests.urdf.fixtures import ARM_URDF, write_package, write_stl
 
 SPEC = "name: CachedArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
 

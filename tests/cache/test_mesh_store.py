@@ -556,7 +556,7 @@ def test_a_process_that_leaves_a_filler_at_work_exits_without_a_shutdown_warning
     script = textwrap.dedent(
         f"""
         from assembler.cache.mesh_swap import use_stored_meshes
-        from tests.test_mesh_store import mesh_spec
+        from tests.cache.test_mesh_store import mesh_spec
         with use_stored_meshes(spec := mesh_spec([Path(p) for p in {[str(f) for f in files]!r}])) as swap:
             spec.compile()
         assert len(swap.missing) == 2
@@ -566,7 +566,7 @@ def test_a_process_that_leaves_a_filler_at_work_exits_without_a_shutdown_warning
     environment.pop("ASSEMBLER_NO_CACHE", None)
     done = subprocess.run(
         [sys.executable, "-W", "default", "-c", "from pathlib import Path\n" + script],
-        cwd=Path(__file__).resolve().parents[1],
+        cwd=Path(__file__).resolve().parents[2],
         env=environment,
         capture_output=True,
         text=True,

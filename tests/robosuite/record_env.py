@@ -1,4 +1,4 @@
-"""Run one robosuite environment in this process and record it: ``python -m tests.bridge.record_env
+"""Run one robosuite environment in this process and record it: ``python -m tests.robosuite.record_env
 stock|specs ENV ROBOT[,ROBOT] STEPS OUT`` writes ``OUT.mjb`` (the compiled world) and ``OUT.npz`` (every
 observation and reward over STEPS seeded random actions).
 

@@ -431,7 +431,7 @@ def test_a_bad_size_limit_is_one_line_naming_the_variable(
 
 
 def test_benchmark_quick_run_writes_every_measure(tmp_path: Path) -> None:
-    repository = Path(__file__).resolve().parent.parent
+    repository = Path(__file__).resolve().parents[2]
     output = tmp_path / "bench"
     command = [sys.executable, "-m", "benchmarks", "--quick", "--robots", "Sparrow7", "--output", str(output)]
     result = subprocess.run(command, cwd=repository, capture_output=True, text=True, timeout=300)

@@ -3,7 +3,7 @@
 Every run must end in a written, loadable model (exit 0) or in one readable line per problem
 (exit 1): never another exception, never a hang (hypothesis' deadline), never a partial or
 temporary file in the output folder. CI runs 200 cases; ``FUZZ_EXAMPLES=10000 pytest
-tests/test_fuzz.py`` is the long run SECURITY.md reports.
+tests/cli/test_fuzz.py`` is the long run SECURITY.md reports.
 """
 
 from __future__ import annotations
