@@ -17,9 +17,8 @@ from typing import Any
 import mujoco
 
 from assembler.cache.repeat import answered_model
+from assembler.registry.arguments import DEFAULT, spec_file_path
 
-DEFAULT = "default"
-"""The robot spec's default base or gripper (as :func:`assembler.assemble` takes it)."""
 
 
 def _plain(overrides: Any) -> Any:
@@ -48,10 +47,10 @@ def load_model(
     cache without reading any spec, as long as every spec file, spec folder and model input it
     was made from is unchanged; ``cache=False`` compiles (and records nothing).
     """
-    robot_is_file = robot.endswith((".yaml", ".yml")) or Path(robot).is_file()
+    spec_file = spec_file_path(robot)
     request = {
         "kind": "load_model",
-        "robot": str(Path(robot).resolve()) if robot_is_file else robot,
+        "robot": str(spec_file) if spec_file is not None else robot,
         "idn": idn,
         "base": base,
         "grippers": dict(grippers) if grippers is not None else None,

@@ -17,18 +17,14 @@ from pathlib import Path
 
 import mujoco
 
+from assembler.registry.arguments import is_spec_file
 from assembler.registry.instances import assemble
 from assembler.cache.key import cache_key
 from assembler.cache.repeat import Origin, Request, record
 from assembler.registry.catalog import add_spec_folders, register_specs
-from assembler.spec.documents import SPEC_SUFFIXES, Overrides
+from assembler.spec.documents import Overrides
 from assembler.models import REGISTRIES, PartModel, RobotModel
 from assembler.files.paths import is_file, shipped_specs_dir
-
-
-def is_spec_file(reference: str) -> bool:
-    """True when a robot reference is a spec file rather than a registered name."""
-    return reference.endswith(SPEC_SUFFIXES) or is_file(reference)
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:

@@ -9,6 +9,8 @@ import argparse
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from assembler.mjcf.geom_group_numbers import GROUP_COUNT
+
 Define = Callable[[argparse.ArgumentParser], None]
 
 REPORT_FORMATS: dict[str, str] = {
@@ -111,8 +113,8 @@ def image_size(text: str) -> tuple[int, int]:
     return size
 
 
-GEOM_GROUPS = range(6)
-"""MuJoCo's geom groups (``mjNGROUP``); ``models.geom_groups.GROUP_COUNT`` (a test keeps them equal)."""
+GEOM_GROUPS = range(GROUP_COUNT)
+"""The geom groups ``render --groups`` takes."""
 
 
 def geom_groups(text: str) -> tuple[int, ...]:

@@ -12,16 +12,15 @@ from pathlib import Path
 from typing import Any
 
 from assembler.cache.repeat import answered_xml
-from assembler.files.paths import allowing, display_path, is_file
+from assembler.files.paths import allowing, display_path
 from assembler.files.writing import write_atomically
 from assembler.mjcf.emit import bundle_xml
+from assembler.registry.arguments import spec_file_path
 
 
 def robot_file(args: argparse.Namespace) -> Path | None:
     """The robot's spec file, when the command names one rather than a registered robot."""
-    reference: str = args.robot
-    spec_file = reference.endswith((".yaml", ".yml")) or is_file(reference)
-    return Path(reference).resolve() if spec_file else None
+    return spec_file_path(args.robot)
 
 
 def build_request(args: argparse.Namespace) -> dict[str, Any] | None:

@@ -222,6 +222,14 @@ def is_file(path: str | Path) -> bool:
         return False
 
 
+def is_dir(path: str | Path) -> bool:
+    """Whether ``path`` is a folder, with :func:`is_file`'s tolerance of impossible names."""
+    try:
+        return Path(path).is_dir()
+    except (OSError, ValueError):
+        return False
+
+
 def locate_model_file(reference: str) -> Path:
     """The file behind a resolved reference; raises :class:`MjcfError` saying what to do if absent.
 

@@ -20,6 +20,7 @@ from assembler.cache.mesh_swap import compile_from_store
 from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.files.paths import locate_model_file
 from assembler.mjcf import census, compose
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
@@ -35,9 +36,6 @@ from assembler.spec.schema import PartSpec
 from assembler.urdf import load_urdf, locate_urdf_file
 
 FloatArray = NDArray[np.float64]
-
-COLLISION_GROUP = 0
-VISUAL_GROUP = 1
 
 
 class PartModel(metaclass=RegisteringMeta):

@@ -25,11 +25,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError, Problem
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.urdf.document import Mimic, UrdfDocument
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
-VISUAL_GROUP = 1
-COLLISION_GROUP = 0
 
 
 def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.MjsEquality | None:

@@ -18,9 +18,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.mesh_swap import compile_from_store
+from assembler.mjcf.geom_group_numbers import VISUAL_GROUPS
 from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
 from assembler.models import RobotModel
-from assembler.models.geom_groups import VISUAL_GROUPS, PartGeoms, describe, geoms_by_part
+from assembler.models.geom_groups import PartGeoms, describe, geoms_by_part
 from assembler.tools.render.backend import RenderError
 
 FLOOR = "render_floor"
