@@ -1,7 +1,7 @@
 """``assembler.load_model``: a robot's compiled model in as little time as MuJoCo's own load of it.
 
 A request made before in this environment is answered from the compiled-model cache through its
-request record (:mod:`assembler.cache.repeat`) without importing the schema or reading any spec;
+request record (:mod:`assembler.build.repeat`) without importing the schema or reading any spec;
 anything else takes the full path (``assemble(...).get_model()``) and records the request for
 next time. This module imports only the cache layer and MuJoCo: that is what keeps a warm load
 close to ``mujoco.MjModel.from_binary_path`` of the cached file.
@@ -16,7 +16,7 @@ from typing import Any
 
 import mujoco
 
-from assembler.cache.repeat import answered_model
+from assembler.build.repeat import answered_model, keyed
 from assembler.registry.arguments import DEFAULT, spec_file_path
 
 
@@ -48,7 +48,7 @@ def load_model(
     was made from is unchanged; ``cache=False`` compiles (and records nothing).
     """
     spec_file = spec_file_path(robot)
-    request = {
+    request = keyed({
         "kind": "load_model",
         "robot": str(spec_file) if spec_file is not None else robot,
         "idn": idn,
@@ -56,7 +56,7 @@ def load_model(
         "grippers": dict(grippers) if grippers is not None else None,
         "overrides": _plain(overrides),
         "specs": [str(Path(folder).resolve()) for folder in specs],
-    }
+    })
     if cache:
         model = answered_model(request)
         if model is not None:

@@ -15,11 +15,10 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from assembler.cache.mesh_swap import compile_from_store
+from assembler.build.compile import compile_home
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, spec_homes
 from assembler.mjcf import compose
-from assembler.mjcf.keyframe import compile_with_home
 from assembler.models import RobotModel
 from assembler.registry.arguments import is_spec_file
 from assembler.registry.catalog import register_specs
@@ -56,7 +55,7 @@ class Scene:
         home: dict[str, float] = {}
         for robot in self.robots:
             home.update(robot.assembly_home())
-        return compile_with_home(self.mjspec, home, f"scene '{self.spec.name}'", compile_from_store)
+        return compile_home(self.mjspec, home, f"scene '{self.spec.name}'")
 
 
 def robot_reference(reference: str, folder: Path | None = None) -> str:

@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler import cache
-from assembler.cache import default_store, wait_for_writes
+from assembler.build import service
+from assembler.build.service import default_store, wait_for_writes
 from assembler.cli import main
 from assembler.files.paths import package_root
 from tests.conftest import use_private_cache
@@ -109,7 +109,7 @@ def edit(path: Path, text: str, seconds_ago: float = 10) -> None:
 
 def lookups() -> tuple[int, int, int]:
     """(hits, misses, bypassed) so far in this process."""
-    return cache.counts.hits, cache.counts.misses, cache.counts.bypassed
+    return service.counts.hits, service.counts.misses, service.counts.bypassed
 
 
 def load(name: str, **kwargs: object) -> mujoco.MjModel:
@@ -345,12 +345,12 @@ def test_a_byte_changed_anywhere_in_an_entry_is_a_miss_never_a_wrong_model(priva
         for file in private_cache.glob("*.mjb"):
             file.unlink()
         model_file.write_bytes(bytes(damaged))
-        cache.service._recent.forget(str(private_cache))  # read from disk, not this process's memory
+        service._recent.forget(str(private_cache))  # read from disk, not this process's memory
         assert counted(lambda: load("Sparrow7")) == (0, 1, 0), position
         assert not model_file.exists()  # the damaged entry is removed
         (model_file,) = private_cache.glob("*.mjb")  # the compile stored a whole one again
     assert len(positions) > 60
-    cache.service._recent.forget(str(private_cache))
+    service._recent.forget(str(private_cache))
     assert counted(lambda: load("Sparrow7")) == (1, 0, 0)
     assert_same_model(load("Sparrow7"), reference)
 
@@ -383,7 +383,7 @@ WORKER = textwrap.dedent(
     """
     import assembler, assembler.cache
     assembler.assemble("Sparrow7").get_model()
-    print(assembler.cache.counts.misses + assembler.cache.counts.hits)
+    print(assembler.build.service.counts.misses + assembler.build.service.counts.hits)
     """
 )
 
@@ -476,7 +476,7 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         edit(package / "robot.xml", MESH_ARM.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
             "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "
-            "m = assembler.assemble(cls.__name__).get_model(); assembler.cache.wait_for_writes(); "
+            "m = assembler.assemble(cls.__name__).get_model(); assembler.build.service.wait_for_writes(); "
             "print(m.geom('robot0_base_col').size[0])"
         )
         environment = {

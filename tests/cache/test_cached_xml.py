@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 import assembler
-from assembler import cache
-from assembler.cache import default_store, wait_for_writes
+from assembler.build import service
+from assembler.build.service import default_store, wait_for_writes
 from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.files.paths import package_root
@@ -55,9 +55,9 @@ def test_the_stored_xml_is_byte_for_byte_a_fresh_emission(name: str) -> None:
     expected = fresh_xml(name)
     first = assembler.assemble(name).get_xml()  # compiled once, emitted from that spec, kept
     wait_for_writes()
-    hits = cache.counts.hits
+    hits = service.counts.hits
     second = assembler.assemble(name).get_xml()  # from the entry
-    assert cache.counts.hits == hits + 1
+    assert service.counts.hits == hits + 1
     assert first == expected and second == expected
 
 
@@ -115,9 +115,9 @@ def test_a_damaged_xml_file_is_a_miss_and_is_replaced() -> None:
     damaged = bytearray((folder / xml).read_bytes())
     damaged[len(damaged) // 2] ^= 1
     (folder / xml).write_bytes(bytes(damaged))
-    misses = cache.counts.misses
+    misses = service.counts.misses
     assert assembler.assemble("Sparrow7").get_xml() == expected
-    assert cache.counts.misses == misses + 1
+    assert service.counts.misses == misses + 1
     wait_for_writes()
     _, _, replaced = entry_of("Sparrow7")
     assert not (folder / xml).exists() and replaced != xml and (folder / replaced).read_text() == expected
@@ -149,7 +149,7 @@ def test_clearing_the_cache_removes_the_xml_files_too() -> None:
     wait_for_writes()
     folder, _, xml = entry_of("Sparrow7")
     assert (folder / xml).exists()
-    cache.clear(default_store())
+    service.clear(default_store())
     assert not list(folder.glob("*.xml"))
 
 
