@@ -139,3 +139,15 @@ def test_every_module_has_a_docstring() -> None:
         name for name, path in MODULES.items() if ast.get_docstring(ast.parse(path.read_text())) is None
     ]
     assert missing == []
+
+
+def test_the_readme_maps_every_package_in_one_line() -> None:
+    readme = (PACKAGE.parent / "README.md").read_text()
+    packages = sorted(p.name for p in PACKAGE.iterdir() if (p / "__init__.py").is_file())
+    unmapped = [name for name in packages if f"`{name}/`" not in readme and f"`{name}/`," not in readme]
+    assert unmapped == []
+
+
+def test_only_the_public_api_sits_at_the_top_of_the_package() -> None:
+    loose = sorted(p.name for p in PACKAGE.glob("*.py"))
+    assert loose == ["__init__.py", "errors.py", "version.py"]
