@@ -22,9 +22,7 @@ from assembler.build import service
 from assembler.build.service import default_store, wait_for_writes
 from assembler.cli import main
 from assembler.files.paths import package_root
-from tests.conftest import use_private_cache
-
-TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
 
 MESH_ARM = """\
 <mujoco model="meshy">
@@ -89,7 +87,7 @@ def mesh_arm(tmp_path: Path) -> Path:
     folder = tmp_path / "arm"
     (folder / "meshes").mkdir(parents=True)
     for name, text in [
-        ("meshes/tet.obj", TETRAHEDRON),
+        ("meshes/tet.obj", TETRAHEDRON_OBJ),
         ("meshy.xml", MESH_ARM),
         ("mesh_arm.yaml", PARENT_SPEC),
         ("mesh_arm_soft.yaml", CHILD_SPEC),
@@ -201,7 +199,7 @@ def test_touching_a_mesh_without_changing_it_still_hits(mesh_arm: Path) -> None:
 
 def test_editing_a_mesh_is_a_miss_and_the_new_mesh_is_used(mesh_arm: Path) -> None:
     before = load("MeshArm")
-    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.3"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
     after = load("MeshArm")
     assert not np.array_equal(after.mesh_vert, before.mesh_vert)
@@ -215,12 +213,12 @@ def test_repeated_loads_in_one_process_are_independent_and_still_see_edits(mesh_
     second.body_mass[:] = 99.0
     third = load("MeshArm")  # a copy of the kept model
     assert_same_model(third, first)
-    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.3"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
 
 
 def test_a_model_from_a_file_edited_a_moment_ago_is_not_stored(mesh_arm: Path, private_cache: Path) -> None:
-    (mesh_arm / "meshes" / "tet.obj").write_text(TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.2"))
+    (mesh_arm / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.2"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
     assert entries(private_cache) == []
 
@@ -472,7 +470,7 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         package = tmp_path / install / "fakebot"
         (package / "meshes").mkdir(parents=True)
         (package / "__init__.py").write_text("")
-        edit(package / "meshes" / "tet.obj", TETRAHEDRON, 3600)
+        edit(package / "meshes" / "tet.obj", TETRAHEDRON_OBJ, 3600)
         edit(package / "robot.xml", MESH_ARM.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
             "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "

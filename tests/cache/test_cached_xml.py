@@ -18,7 +18,7 @@ from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.files.paths import package_root
 from assembler.mjcf.emit import to_xml
-from tests.conftest import use_private_cache
+from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
 
 ROBOSUITE = package_root("robosuite") is not None
 needs_robosuite = pytest.mark.skipif(not ROBOSUITE, reason="robosuite is not installed")
@@ -70,8 +70,6 @@ def test_xml_emitted_with_stored_meshes_is_the_same_text() -> None:
     assert assembler.assemble("Panda").get_xml() == expected
 
 
-TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
-
 MESH_ARM = """\
 <mujoco model="meshy">
   <compiler angle="radian" meshdir="meshes"/>
@@ -95,7 +93,7 @@ def test_xml_emitted_with_meshes_from_the_mesh_store_is_the_same_text(tmp_path: 
     """Without robosuite too: an OBJ mesh used twice, read from the mesh store by both compiles."""
     folder = tmp_path / "arm"
     (folder / "meshes").mkdir(parents=True)
-    (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON)
+    (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ)
     (folder / "meshy.xml").write_text(MESH_ARM)
     (folder / "mesh_arm.yaml").write_text("name: MeshArm\nmjcf: meshy.xml\n")
     for path in [*folder.rglob("*"), folder]:

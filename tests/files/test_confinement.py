@@ -13,7 +13,7 @@ import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError, SpecError
 from assembler.files.paths import ALLOW_VARIABLE, allow_paths
-from tests.conftest import TWO_LINK_MJCF
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
 Write = Callable[[str, str], Path]
 
@@ -28,7 +28,6 @@ MESH_MJCF = """\
   </worldbody>
 </mujoco>
 """
-TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
 
 @pytest.fixture(autouse=True)
@@ -108,7 +107,7 @@ def test_parent_spec_outside_is_refused(write: Write) -> None:
 def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
     write: Write, tmp_path: Path, meshdir: str, file: str
 ) -> None:
-    write("outside/tetra.obj", TETRA)
+    write("outside/tetra.obj", TETRAHEDRON_OBJ)
     write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir=meshdir, file=file.format(tmp=tmp_path)))
     (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
     with pytest.raises(MjcfError) as caught:
@@ -120,7 +119,7 @@ def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
 
 
 def test_meshes_anywhere_below_the_spec_folder_are_fine(write: Write) -> None:
-    write("specs/meshes/tetra.obj", TETRA)  # beside the MJCF's folder, not below it
+    write("specs/meshes/tetra.obj", TETRAHEDRON_OBJ)  # beside the MJCF's folder, not below it
     write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir="../meshes", file="tetra.obj"))
     (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
     assert cls(idn=0).get_model().nmesh == 1
@@ -202,7 +201,7 @@ def test_files_read_while_parsing_are_confined_too(
     write: Write, tmp_path: Path, element: str, target: str
 ) -> None:
     write("outside/part.xml", "<mujoco/>")
-    write("outside/tetra.obj", TETRA)
+    write("outside/tetra.obj", TETRAHEDRON_OBJ)
     write("specs/twolink.xml", TWO_LINK_MJCF.replace("<worldbody>", f"{element}\n  <worldbody>", 1))
     (cls,) = assembler.register_specs(write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n"))
     with pytest.raises(MjcfError) as caught:
