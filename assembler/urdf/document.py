@@ -117,29 +117,40 @@ class _Reader:
     def problem(self, line: int, message: str) -> None:
         self.problems.append(Problem(f"{self.shown}:{line}: {message}"))
 
+    def _confined(self, written: str, line: int, directory: str, document: UrdfDocument) -> Path | None:
+        """The mesh file ``written`` names, confined to its home before its existence is looked at
+        (a refusal is the same whether or not the file exists); None, reported, if it is missing."""
+        where = f"{self.shown}:{line}: mesh "
+        if split_package_uri(written) is not None:
+            found = find_package_file(written, self.path, f"{where}{written}: ")
+            if found is None:
+                self.problem(line, f"mesh {not_found_message(written, self.path)}")
+                return None
+            file, home = found
+            document.homes.add(home)
+            return file
+        name = written.removeprefix("file://")
+        file = confine(
+            Path(name) if os.path.isabs(name) else self.path.parent / directory / name,
+            self.homes,
+            where,
+            MjcfError,
+        )
+        if not is_file(file):
+            self.problem(line, f"mesh file not found: {display_path(file)}")
+            return None
+        return file
+
     def mesh_file(self, written: str, line: int, directory: str, document: UrdfDocument) -> str | None:
         if written in self.resolved:
             return self.resolved[written]
         if written in self.reported:
             return None
         self.reported.add(written)
-        if split_package_uri(written) is not None:
-            found = find_package_file(written, self.path)
-            if found is None:
-                self.problem(line, f"mesh {not_found_message(written, self.path)}")
-                return None
-            file, home = found
-            document.homes.add(home)
-            homes = [*self.homes, home]
-        else:
-            name = written.removeprefix("file://")
-            file = Path(name) if os.path.isabs(name) else self.path.parent / directory / name
-            homes = list(self.homes)
-            if not is_file(file):
-                self.problem(line, f"mesh file not found: {display_path(file)}")
-                return None
         try:
-            file = confine(file, homes, f"{self.shown}:{line}: mesh ", MjcfError)
+            file = self._confined(written, line, directory, document)
+            if file is None:
+                return None
             readable = readable_mesh(file)
         except MjcfError as error:
             self.problems.extend(error.problems)

@@ -21,7 +21,6 @@ from assembler.errors import MissingPackageError, MjcfError
 from assembler.files.paths import (
     PACKAGE_SCHEME,
     allowed_folders,
-    confine,
     display_path,
     homes_of,
     is_file,
@@ -65,15 +64,14 @@ def locate_urdf_file(reference: str) -> Path:
     in_python_package = _python_package_file(reference)
     if in_python_package is not None:
         return in_python_package
-    found = find_package_file(reference)
+    found = find_package_file(reference, what=f"{reference}: ")
     if found is None:
         parts = split_package_uri(reference)
         message = not_found_message(reference)
         if parts is not None and " not found " in message:
             raise MissingPackageError(message, parts[0])
         raise MjcfError(message)
-    file, home = found
-    return confine(file, [home], f"{reference}: ", MjcfError)
+    return found[0]  # confined to its package by find_package_file
 
 
 def _globals_xml(document: UrdfDocument) -> str:

@@ -63,13 +63,29 @@ def test_absolute_mjcf_path_outside_is_refused(write: Write) -> None:
     assert str(caught.value) == f"{spec}:2:7: mjcf: {target} {OUTSIDE}"
 
 
-def test_a_file_that_appears_outside_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+def test_a_missing_file_outside_is_refused_as_an_existing_one_is(write: Write, tmp_path: Path) -> None:
+    # No existence oracle: a stranger's spec must not learn which files exist outside by the message.
     spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
-    (cls,) = assembler.register_specs(spec)  # nothing there yet: nothing to refuse
-    write("outside/twolink.xml", TWO_LINK_MJCF)
+    messages = []
+    for exists in (False, True):
+        if exists:
+            write("outside/twolink.xml", TWO_LINK_MJCF)
+        with pytest.raises(SpecError) as caught:
+            assembler.register_specs(spec)
+        messages.append(str(caught.value))
+    assert messages == [f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"] * 2
+
+
+def test_a_file_linked_out_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+    inside = write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n")
+    (cls,) = assembler.register_specs(spec)
+    target = write("outside/twolink.xml", TWO_LINK_MJCF)
+    inside.unlink()
+    inside.symlink_to(target)  # re-pointed between loading and reading
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
-    assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {inside} (a link to {target}) {OUTSIDE}"
 
 
 def test_a_symbolic_link_leading_out_is_refused_and_named(write: Write, tmp_path: Path) -> None:

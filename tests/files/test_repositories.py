@@ -144,7 +144,7 @@ def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: 
         ),
         pytest.param(
             'alow = ["assets"]\n',
-            "{marker}: unknown key 'alow'. Did you mean 'allow'? Valid keys: specs, assets, allow",
+            "{marker}: unknown key 'alow'. Did you mean 'allow'? Valid keys: specs, assets, allow, packages",
             id="unknown-key",
         ),
     ],

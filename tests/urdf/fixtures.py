@@ -110,9 +110,14 @@ effort, velocity and dynamics; a COLLADA visual mesh in millimetres; a continuou
 prismatic fingers, the second a <mimic> of the first (multiplier -1, offset 0.01); a fixed tool link."""
 
 
-def write_package(root: Path, name: str = "my_arm", urdf: str = ARM_URDF) -> Path:
-    """A ROS package folder ``root/name`` (package.xml, urdf/, meshes/); returns the URDF's path."""
+def write_package(root: Path, name: str = "my_arm", urdf: str = ARM_URDF, declare: bool = True) -> Path:
+    """A ROS package folder ``root/name`` (package.xml, urdf/, meshes/); returns the URDF's path.
+
+    With ``declare``, the folder above ``root`` is made a spec repository that declares the package
+    (``packages = ["root/name"]``), as a lab keeps a vendor's package beside its specs."""
     package = root / name
+    if declare:
+        (root.parent / "robot-assembler.toml").write_text(f'packages = ["{root.name}/{name}"]\n')
     package.mkdir(parents=True, exist_ok=True)
     (package / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
     write_stl(package / "meshes" / "cube.stl")
