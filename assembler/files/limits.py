@@ -32,3 +32,7 @@ models with inline heightfields or meshes stay well below this."""
 
 MAX_MJCF_INCLUDE_DEPTH = 16
 """Levels of MJCF ``<include>`` files checked before MuJoCo reads them; real models use one."""
+
+MAX_DAE_BYTES = 64 * 1024 * 1024
+"""64 MiB per COLLADA (.dae) mesh converted with trimesh, read in one bounded read. The largest in
+example-robot-data (go1's trunk.dae) is 29 MB; trimesh's memory grows many times the file's size."""

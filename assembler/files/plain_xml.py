@@ -11,14 +11,14 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 import xml.parsers.expat
 
-from assembler.errors import AssemblerError, MjcfError
+from assembler.errors import MjcfError
 
 
 class _Refused(Exception):
     """Raised inside an expat handler to stop the parse at once."""
 
 
-def check_plain_xml(data: bytes, shown: str, error: type[AssemblerError] = MjcfError) -> None:
+def check_plain_xml(data: bytes, shown: str, error: type[Exception] = MjcfError) -> None:
     """Refuse ``data`` (the text of the file shown as ``shown``) if it is not well-formed XML or
     declares a document type; reads nothing else."""
     parser = xml.parsers.expat.ParserCreate()
@@ -38,7 +38,7 @@ def check_plain_xml(data: bytes, shown: str, error: type[AssemblerError] = MjcfE
         raise error(f"{shown}: not well-formed XML: {problem}") from None
 
 
-def parse_plain_xml(data: bytes, shown: str, error: type[AssemblerError] = MjcfError) -> ET.Element:
+def parse_plain_xml(data: bytes, shown: str, error: type[Exception] = MjcfError) -> ET.Element:
     """The root element of ``data``, after :func:`check_plain_xml`."""
     check_plain_xml(data, shown, error)
     return ET.fromstring(data)

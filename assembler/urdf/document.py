@@ -23,7 +23,7 @@ from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
 from assembler.files.paths import confine, display_path, is_file
-from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
+from assembler.urdf.meshes import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 
 FORCED_COMPILER: dict[str, str] = {"discardvisual": "false", "fusestatic": "false", "strippath": "false"}
@@ -148,6 +148,7 @@ class _Reader:
             return None
         self.reported.add(written)
         try:
+            check_mesh_format(Path(written.removeprefix("file://")), f"mesh {written}")  # before any lookup
             file = self._confined(written, line, directory, document)
             if file is None:
                 return None

@@ -258,15 +258,14 @@ def test_two_mesh_files_with_one_name_stay_two_meshes(tmp_path: Path) -> None:
 
 @NEEDS_CONVERTER
 def test_an_unreadable_mesh_is_reported_once_with_what_to_do(tmp_path: Path, package: Path) -> None:
-    (package.parent.parent / "meshes" / "broken.ply").write_text("not a mesh")
-    package.write_text(ARM_URDF.replace("cube.dae", "broken.ply").replace("cube.stl", "broken.ply"))
+    (package.parent.parent / "meshes" / "broken.dae").write_text("<COLLADA><library_geometries>")
+    package.write_text(ARM_URDF.replace("cube.dae", "broken.dae").replace("cube.stl", "broken.dae"))
     with pytest.raises(MjcfError) as caught:
         _load(package)
     lines = str(caught.value).splitlines()
-    assert (
-        len(lines) == 1
-        and f"my_arm.urdf:{STL_LINE}: " in lines[0]
-        and "broken.ply: trimesh cannot read it" in lines[0]
+    assert len(lines) == 1 and lines[0] == (
+        f"{package}:{STL_LINE}: {package.parent.parent / 'meshes' / 'broken.dae'}: not well-formed XML: "
+        "no element found: line 1, column 29"
     )
 
 
