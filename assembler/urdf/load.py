@@ -12,12 +12,13 @@ holds the file (as ``mjcf:`` does), otherwise a ROS package found as described i
 from __future__ import annotations
 
 import functools
+import warnings
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import mujoco
 
-from assembler.errors import MissingPackageError, MjcfError
+from assembler.errors import AssemblerWarning, MissingPackageError, MjcfError
 from assembler.files.paths import (
     PACKAGE_SCHEME,
     allowed_folders,
@@ -102,8 +103,20 @@ def _authored(spec: mujoco.MjSpec, document: UrdfDocument) -> tuple[Authored, ..
     )
 
 
+def _ignored(document: UrdfDocument) -> list[str]:
+    """One line per child of the URDF's ``<mujoco>`` element that nothing reads."""
+    shown = display_path(document.path)
+    return [
+        f"{shown}:{line}: <mujoco><{tag}> is ignored: a URDF's <mujoco> element gives only "
+        f"{', '.join(f'<{t}>' for t in GLOBAL_SECTIONS)}; say the rest in the spec (actuators:, joints:) "
+        "or in an MJCF file"
+        for tag, line in document.ignored
+    ]
+
+
 def _notes(document: UrdfDocument, balanced: list[str]) -> tuple[str, ...]:
     notes = [f"the URDF's compiler {setting} was replaced" for setting in document.overridden]
+    notes += _ignored(document)
     if balanced:
         notes.append(
             f"balance_inertia: the inertia of {', '.join(balanced)} violated A + B >= C, made isotropic"
@@ -157,6 +170,8 @@ def _load(
     unnamed = [j for j in spec.joints if not j.name and j.type != mujoco.mjtJoint.mjJNT_FREE]
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name")
+    for line in _ignored(document):  # said once per version of the file, as MuJoCo's own warnings are
+        warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))
     return MjcfSource(
         path=path,
