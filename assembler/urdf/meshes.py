@@ -33,6 +33,7 @@ from typing import Any
 from assembler.cache.settings import DIR_VARIABLE, cache_dir
 from assembler.files.extras import install_command
 from assembler.files.limits import MAX_DAE_BYTES
+from assembler.files.paths import display_path
 from assembler.files.plain_xml import check_plain_xml
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
@@ -82,8 +83,14 @@ def check_mesh_format(path: Path, shown: str) -> None:
     suffix = path.suffix.lower()
     if suffix in READABLE_SUFFIXES or suffix in CONVERTED_SUFFIXES:
         return
-    archive = next((s for s in suffixes if s in ARCHIVE_SUFFIXES), None)
-    what = f"an archive ({archive})" if archive else f"'{suffix}'" if suffix else "a file without a suffix"
+    archive = next((i for i, s in enumerate(suffixes) if s in ARCHIVE_SUFFIXES), None)
+    what = (
+        f"an archive ({''.join(suffixes[archive:])})"
+        if archive is not None
+        else f"'{suffix}'"
+        if suffix
+        else "a file without a suffix"
+    )
     raise MeshConversionError(f"{shown}: {what} is not a mesh format read here; a mesh is {ALLOWED_FORMATS}")
 
 
@@ -106,14 +113,18 @@ def _read_dae(source: Path) -> bytes:
         with source.open("rb") as stream:
             data = stream.read(MAX_DAE_BYTES + 1)
     except OSError as error:
-        raise MeshConversionError(f"{source}: cannot read it ({error.strerror or error})") from None
+        raise MeshConversionError(
+            f"{display_path(source)}: cannot read it ({error.strerror or error})"
+        ) from None
     if len(data) > MAX_DAE_BYTES:
         raise MeshConversionError(
-            f"{source}: the file's size exceeds the limit of {MAX_DAE_BYTES} bytes for a mesh"
+            f"{display_path(source)}: the file's size exceeds the limit of {MAX_DAE_BYTES} bytes for a mesh"
         )
     if data.startswith(ARCHIVE_MAGIC):
-        raise MeshConversionError(f"{source}: an archive, not a COLLADA file; a mesh is {ALLOWED_FORMATS}")
-    check_plain_xml(data, str(source), MeshConversionError)
+        raise MeshConversionError(
+            f"{display_path(source)}: an archive, not a COLLADA file; a mesh is {ALLOWED_FORMATS}"
+        )
+    check_plain_xml(data, display_path(source), MeshConversionError)
     return data
 
 
@@ -170,11 +181,13 @@ def _convert(source: Path, data: bytes, target: Path) -> None:
     try:  # bytes, not a path: trimesh then has no folder to resolve a texture or another file in
         scene: Any = trimesh.load(io.BytesIO(data), file_type="dae", force="scene")  # a trimesh.Scene
     except Exception as error:  # trimesh raises many kinds; each means "this file cannot be read"
-        raise MeshConversionError(f"{source}: trimesh cannot read it ({error})") from None
+        raise MeshConversionError(f"{display_path(source)}: trimesh cannot read it ({error})") from None
     if scene.units not in (None, "m", "meter", "meters"):
         scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
     if not scene.geometry:
-        raise MeshConversionError(f"{source}: the file holds no triangles; give the link another mesh")
+        raise MeshConversionError(
+            f"{display_path(source)}: the file holds no triangles; give the link another mesh"
+        )
     mesh = scene.to_mesh()
     # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
     _write_atomically(
@@ -187,18 +200,19 @@ def _convert(source: Path, data: bytes, target: Path) -> None:
 
 def readable_mesh(source: Path) -> Path:
     """``source`` if MuJoCo reads it, else its OBJ conversion (made now if not made before)."""
-    check_mesh_format(source, str(source))  # the file the name resolved to: a link may change the suffix
+    shown = display_path(source)
+    check_mesh_format(source, shown)  # the file the name resolved to: a link may change the suffix
     if not needs_conversion(source):
         return source
     if source.suffix.lower() == ".dae" and not importable("collada"):
         missing = "trimesh and pycollada" if not converter_available() else "pycollada"
         raise MeshConversionError(
-            f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and {missing} "
+            f"{shown}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and {missing} "
             f"to convert it are not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     if not converter_available():
         raise MeshConversionError(
-            f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
+            f"{shown}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
             f"convert it is not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     data = _read_dae(source)
