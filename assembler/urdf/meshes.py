@@ -31,9 +31,10 @@ from pathlib import Path
 from typing import Any
 
 from assembler.cache.settings import DIR_VARIABLE, cache_dir
+from assembler.errors import MjcfError
 from assembler.files.extras import install_command
 from assembler.files.limits import MAX_DAE_BYTES
-from assembler.files.paths import display_path
+from assembler.files.paths import confine, display_path
 from assembler.files.plain_xml import check_plain_xml
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
@@ -167,12 +168,18 @@ def _write_atomically(target: Path, write: Callable[[str], object]) -> None:
         Path(temporary).unlink(missing_ok=True)
 
 
+def _confined(made: Path) -> Path:
+    """A file made in the conversions' folder, through the one door every file read passes (a link
+    placed there leading out is refused like any other)."""
+    return confine(made, [converted_dir()], "converted mesh ", MjcfError)
+
+
 def renamed_copy(source: Path) -> Path:
     """A copy of ``source`` under a name no other mesh has (made once per content)."""
     target = _digest_name(source, source.suffix, _digest(source))
     if not target.is_file():
         _write_atomically(target, lambda temporary: shutil.copyfile(source, temporary))
-    return target
+    return _confined(target)
 
 
 def _convert(source: Path, data: bytes, target: Path) -> None:
@@ -219,4 +226,4 @@ def readable_mesh(source: Path) -> Path:
     target = _digest_name(source, ".obj", hashlib.blake2b(data, digest_size=16).hexdigest())
     if not target.is_file():
         _convert(source, data, target)
-    return target
+    return _confined(target)

@@ -3,6 +3,7 @@ folders the user allowed; MJCF is refused before parsing when it declares a DTD 
 
 from __future__ import annotations
 
+import importlib
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -269,3 +270,17 @@ def test_shipped_specs_build_from_another_working_directory(
         0,
         ["wrote out.xml"],
     )
+
+
+def test_a_controller_file_a_spec_names_is_confined_too(write: Write, tmp_path: Path) -> None:
+    pytest.importorskip("robosuite")
+    controllers = importlib.import_module("assembler.robosuite.controllers")  # imports robosuite
+    write("outside/ctrl.json", '{"type": "BASIC", "body_parts": {}}')
+    write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write(
+        "specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\nrobosuite:\n  controller: ../outside/ctrl.json\n"
+    )
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(SpecError) as caught:
+        controllers.declared_config(cls)
+    assert str(caught.value) == f"{spec}:4:15: robosuite.controller: {tmp_path}/outside/ctrl.json {OUTSIDE}"
