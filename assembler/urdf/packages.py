@@ -30,7 +30,7 @@ from pathlib import Path
 
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
-from assembler.files.paths import confine, is_file
+from assembler.files.paths import confine, display_path, is_file
 from assembler.files.repositories import MARKER, find_repository
 
 PACKAGE_SCHEME = "package://"
@@ -113,11 +113,31 @@ def not_found_message(uri: str, urdf: Path | None = None) -> str:
     todo = (
         f"install it: {install_command(extra)}"
         if extra
-        else f"declare its folder in packages of the spec repository's {MARKER} (README: Spec "
-        "repositories), or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+        else _declare_hint(name, urdf) + "or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
     )
     where = "the packages its spec repository declares, " if urdf is not None else ""
     return (
         f"{uri}: package '{name}' not found (searched {where}ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and "
         f"the share/ folders of this Python environment); {todo}"
     )
+
+
+def _declare_hint(name: str, urdf: Path | None) -> str:
+    """How to declare the package: the exact line when a folder above the URDF looks like package
+    ``name`` (named so, with a package.xml), as a vendor's package beside its URDF does."""
+    general = (
+        f"declare its folder in packages of the spec repository's {MARKER} (README: Spec repositories), "
+    )
+    if urdf is None:
+        return general
+    looks = next((f for f in urdf.parents if f.name == name and os.path.isfile(f / "package.xml")), None)
+    if looks is None:
+        return general
+    repository = find_repository(urdf.parent)
+    if repository is None or not looks.is_relative_to(repository.root):
+        return (
+            f"if {display_path(looks)} is that package, declare it in packages of a {MARKER} at the top of "
+            "your checkout, "
+        )
+    line = f'packages = ["{looks.relative_to(repository.root).as_posix()}"]'
+    return f"if {display_path(looks)} is that package, declare it: {line} in {repository.where}, "

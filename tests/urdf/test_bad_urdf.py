@@ -189,6 +189,32 @@ def test_a_vendor_package_the_repository_declares_is_read_without_ros_package_pa
     assert model.nmesh == 1 and model.njnt == 1
 
 
+def test_an_undeclared_vendor_package_beside_its_urdf_gets_the_line_that_declares_it(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Before issue 23 such a package was found by its folder's name; now the refusal says what to write.
+    lab = _lab(
+        tmp_path,
+        "",
+        {
+            "vendor/arm_pkg/package.xml": "<package><name>arm_pkg</name></package>",
+            "vendor/arm_pkg/meshes/tetra.obj": TETRA,
+            "vendor/arm_pkg/urdf/arm.urdf": mesh("package://arm_pkg/meshes/tetra.obj"),
+        },
+        'allow = ["vendor"]\n',
+    )
+    (lab / "specs" / "arm.yaml").write_text(SPEC.replace("arm.urdf", "../vendor/arm_pkg/urdf/arm.urdf"))
+    monkeypatch.chdir(lab)
+    assert main(["build", "specs/arm.yaml", "-o", "out.xml"]) == 1
+    assert capsys.readouterr().err.splitlines() == [
+        "specs/arm.yaml:2:7: urdf: vendor/arm_pkg/urdf/arm.urdf:3: mesh package://arm_pkg/meshes/tetra.obj: "
+        "package 'arm_pkg' not found (searched the packages its spec repository declares, ROS_PACKAGE_PATH, "
+        "AMENT_PREFIX_PATH and the share/ folders of this Python environment); if vendor/arm_pkg is that "
+        'package, declare it: packages = ["vendor/arm_pkg"] in robot-assembler.toml, or set ROS_PACKAGE_PATH '
+        "or AMENT_PREFIX_PATH to where it is"
+    ]
+
+
 @NEEDS_CONVERTER
 def test_a_cache_folder_that_cannot_be_written_is_one_line_for_a_dae_mesh(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
