@@ -1,27 +1,23 @@
 """One streaming pass over a URDF before any tree is built: the limits, and the lines we report.
 
-expat reads the text once and builds nothing. It stops at the limits of
-:mod:`assembler.files.limits` (elements nested deeper than :data:`MAX_URDF_DEPTH`, more links than
-:data:`MAX_URDF_LINKS`), finds two links or two joints of one name (MuJoCo's import or our own
-post-processing would otherwise fail with a traceback), and records the line of every element the
-messages name: meshes, joints and the children of the ``<mujoco>`` extension element.
+expat reads the text once and builds nothing (:func:`assembler.files.plain_xml.stream`). It stops
+at the limits of :mod:`assembler.files.limits` (elements nested deeper than :data:`MAX_URDF_DEPTH`,
+more links than :data:`MAX_URDF_LINKS`), finds two links or two joints of one name (MuJoCo's import
+or our own post-processing would otherwise fail with a traceback), and records the line of every
+element the messages name: meshes, joints and the children of the ``<mujoco>`` extension element.
 """
 
 from __future__ import annotations
 
-import xml.parsers.expat
 from collections.abc import Collection
 from dataclasses import dataclass, field
 
 from assembler.errors import MjcfError, Problem
 from assembler.files.limits import MAX_URDF_DEPTH, MAX_URDF_LINKS
+from assembler.files.plain_xml import StopReading, stream
 
 NAMED: tuple[str, ...] = ("link", "joint")
 """Top-level elements whose names must be unique (MuJoCo names its bodies and joints after them)."""
-
-
-class _Stop(Exception):
-    """Raised inside an expat handler to stop the parse at a limit."""
 
 
 @dataclass
@@ -36,17 +32,15 @@ class Outline:
 def outline(data: bytes, shown: str, paths: Collection[str]) -> Outline:
     """The lines of the elements at ``paths``; :class:`MjcfError` at a limit or for a repeated name."""
     found = Outline({path: [] for path in paths})
-    parser = xml.parsers.expat.ParserCreate()
     stack: list[str] = []
     first: dict[tuple[str, str], int] = {}
     problems: list[Problem] = []
     links = [0]  # top-level <link> elements so far
 
-    def start(name: str, attributes: dict[str, str]) -> None:
+    def start(name: str, attributes: dict[str, str], line: int) -> None:
         stack.append(name)
-        line = parser.CurrentLineNumber
         if len(stack) > MAX_URDF_DEPTH:
-            raise _Stop(
+            raise StopReading(
                 f"{shown}:{line}: elements nest deeper than the limit of {MAX_URDF_DEPTH} levels; "
                 "a URDF nests a few levels deep"
             )
@@ -59,7 +53,7 @@ def outline(data: bytes, shown: str, paths: Collection[str]) -> Outline:
             return
         links[0] += name == "link"
         if links[0] > MAX_URDF_LINKS:
-            raise _Stop(
+            raise StopReading(
                 f"{shown}:{line}: more than {MAX_URDF_LINKS} links, the limit (MuJoCo cannot compile a "
                 "chain of bodies much deeper); a robot has a few dozen"
             )
@@ -79,14 +73,7 @@ def outline(data: bytes, shown: str, paths: Collection[str]) -> Outline:
     def end(_: str) -> None:
         stack.pop()
 
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    try:
-        parser.Parse(data, True)
-    except _Stop as stop:
-        raise MjcfError(str(stop)) from None
-    except xml.parsers.expat.ExpatError as error:
-        raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
+    stream(data, shown, start, end)
     if problems:
         raise MjcfError(problems)
     return found

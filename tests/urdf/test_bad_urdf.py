@@ -72,6 +72,12 @@ CHAIN = urdf(
     more="".join(f'  <link name="c{i}"/>\n' for i in range(MAX_URDF_LINKS))  # 2 + 1,000 links
 )
 NESTED = urdf(visual="<visual>" * 5000 + "</visual>" * 5000)
+VENDOR_PACKAGE: dict[str, str | bytes] = {
+    "vendor/arm_pkg/package.xml": "<package><name>arm_pkg</name></package>",
+    "vendor/arm_pkg/meshes/tetra.obj": TETRA,
+    "vendor/arm_pkg/urdf/arm.urdf": mesh("package://arm_pkg/meshes/tetra.obj"),
+}
+"""A vendor's ROS package kept in the lab, its URDF naming its mesh through package://."""
 DOCTYPE_DAE = b'<?xml version="1.0"?>\n<!DOCTYPE c [<!ENTITY a "aaaa">]>\n<COLLADA>&a;</COLLADA>\n'
 
 # One row per case: (URDF, other files of the lab, robot-assembler.toml, expected lines). {tmp}: the
@@ -174,11 +180,7 @@ def test_a_vendor_package_the_repository_declares_is_read_without_ros_package_pa
     lab = _lab(
         tmp_path,
         "",
-        {
-            "vendor/arm_pkg/package.xml": "<package><name>arm_pkg</name></package>",
-            "vendor/arm_pkg/meshes/tetra.obj": TETRA,
-            "vendor/arm_pkg/urdf/arm.urdf": mesh("package://arm_pkg/meshes/tetra.obj"),
-        },
+        VENDOR_PACKAGE,
         'packages = ["vendor/arm_pkg"]\n',
     )
     (lab / "specs" / "arm.yaml").write_text(SPEC.replace("urdf: arm.urdf", f"urdf: {urdf_field}"))
@@ -196,11 +198,7 @@ def test_an_undeclared_vendor_package_beside_its_urdf_gets_the_line_that_declare
     lab = _lab(
         tmp_path,
         "",
-        {
-            "vendor/arm_pkg/package.xml": "<package><name>arm_pkg</name></package>",
-            "vendor/arm_pkg/meshes/tetra.obj": TETRA,
-            "vendor/arm_pkg/urdf/arm.urdf": mesh("package://arm_pkg/meshes/tetra.obj"),
-        },
+        VENDOR_PACKAGE,
         'allow = ["vendor"]\n',
     )
     (lab / "specs" / "arm.yaml").write_text(SPEC.replace("arm.urdf", "../vendor/arm_pkg/urdf/arm.urdf"))
