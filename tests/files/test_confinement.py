@@ -159,6 +159,11 @@ def test_allow_paths_in_python_admits_a_folder(write: Write, tmp_path: Path) -> 
             "package://robosuite/" + "../" * 30 + "etc/hostname: /etc/hostname " + OUTSIDE,
             id="dotdot-out-of-the-package",
         ),
+        pytest.param(  # the same line for a file that does not exist: no existence oracle
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file",
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file: /etc/no-such-file " + OUTSIDE,
+            id="dotdot-out-of-the-package-to-a-missing-file",
+        ),
         pytest.param(
             "package://os.path/x.xml",
             "package://os.path/x.xml: expected package://<top-level package>/<path in it>",

@@ -16,6 +16,7 @@ from pathlib import Path
 import mujoco
 import pytest
 
+import assembler.urdf.meshes
 from assembler.cli import main
 from assembler.files.limits import MAX_URDF_DEPTH, MAX_URDF_LINKS
 from assembler.urdf.meshes import converter_available, importable
@@ -226,6 +227,20 @@ def test_a_cache_folder_that_cannot_be_written_is_one_line_for_a_dae_mesh(
     assert capsys.readouterr().err.splitlines() == [
         f"{HEAD}:3: cannot write the converted mesh to {tmp_path}/cache/converted-meshes (Not a directory); "
         "make the cache folder writable or point ASSEMBLER_CACHE_DIR at one that is"
+    ]
+
+
+@NEEDS_CONVERTER
+def test_a_dae_larger_than_the_limit_is_one_line_and_never_reaches_trimesh(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    lab = _lab(tmp_path, mesh("meshes/arm.dae"), {}, "")
+    size = write_dae(lab / "specs" / "meshes" / "arm.dae").stat().st_size
+    monkeypatch.setattr(assembler.urdf.meshes, "MAX_DAE_BYTES", size - 1)  # 64 MiB is too much to write
+    monkeypatch.chdir(lab)
+    assert main(["validate", "--compile", "specs/arm.yaml"]) == 1
+    assert capsys.readouterr().err.splitlines() == [
+        f"{HEAD}:3: specs/meshes/arm.dae: the file's size exceeds the limit of {size - 1} bytes for a mesh"
     ]
 
 
