@@ -52,7 +52,7 @@ def stream(
         parser.Parse(data, True)
     except StopReading as stop:
         raise error(str(stop)) from None
-    except xml.parsers.expat.ExpatError as problem:
+    except (xml.parsers.expat.ExpatError, LookupError) as problem:  # LookupError: an unknown encoding
         raise error(f"{shown}: not well-formed XML: {problem}") from None
 
 

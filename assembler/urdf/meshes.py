@@ -189,13 +189,16 @@ def _convert(source: Path, data: bytes, target: Path) -> None:
         scene: Any = trimesh.load(io.BytesIO(data), file_type="dae", force="scene")  # a trimesh.Scene
     except Exception as error:  # trimesh raises many kinds; each means "this file cannot be read"
         raise MeshConversionError(f"{display_path(source)}: trimesh cannot read it ({error})") from None
-    if scene.units not in (None, "m", "meter", "meters"):
-        scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
     if not scene.geometry:
         raise MeshConversionError(
             f"{display_path(source)}: the file holds no triangles; give the link another mesh"
         )
-    mesh = scene.to_mesh()
+    try:
+        if scene.units not in (None, "m", "meter", "meters"):
+            scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
+        mesh = scene.to_mesh()
+    except Exception as error:  # numpy's and trimesh's errors on a unit of 0, a singular transform, ...
+        raise MeshConversionError(f"{display_path(source)}: trimesh cannot convert it ({error})") from None
     # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
     _write_atomically(
         target,

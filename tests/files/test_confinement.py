@@ -289,3 +289,15 @@ def test_a_controller_file_a_spec_names_is_confined_too(write: Write, tmp_path: 
     with pytest.raises(SpecError) as caught:
         controllers.declared_config(cls)
     assert str(caught.value) == f"{spec}:4:15: robosuite.controller: {tmp_path}/outside/ctrl.json {OUTSIDE}"
+
+
+def test_mjcf_declaring_an_unknown_encoding_is_one_line(write: Write, tmp_path: Path) -> None:
+    # expat raises LookupError, not ExpatError, for it: a traceback before issue 23.
+    write("specs/enc.xml", '<?xml version="1.0" encoding="no-such"?>\n' + TWO_LINK_MJCF)
+    (cls,) = assembler.register_specs(write("specs/enc.yaml", "name: Enc\nmjcf: enc.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0).check()
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/enc.yaml:2:7: mjcf: {tmp_path}/specs/enc.xml: not well-formed XML: "
+        "unknown encoding: no-such"
+    )

@@ -20,7 +20,7 @@ import assembler.urdf.meshes
 from assembler.cli import main
 from assembler.files.limits import MAX_URDF_DEPTH, MAX_URDF_LINKS
 from assembler.urdf.meshes import converter_available, importable
-from tests.urdf.fixtures import write_dae
+from tests.urdf.fixtures import dae_text, write_dae
 
 INERTIAL = '<inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>'
 TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
@@ -79,6 +79,7 @@ VENDOR_PACKAGE: dict[str, str | bytes] = {
     "vendor/arm_pkg/urdf/arm.urdf": mesh("package://arm_pkg/meshes/tetra.obj"),
 }
 """A vendor's ROS package kept in the lab, its URDF naming its mesh through package://."""
+ZERO_UNIT_DAE = dae_text(meter="0")
 DOCTYPE_DAE = b'<?xml version="1.0"?>\n<!DOCTYPE c [<!ENTITY a "aaaa">]>\n<COLLADA>&a;</COLLADA>\n'
 
 # One row per case: (URDF, other files of the lab, robot-assembler.toml, expected lines). {tmp}: the
@@ -102,6 +103,8 @@ CASES = [
     pytest.param(mesh("meshes/arm.stl.bz2"), {}, "", [f"{HEAD}:3: mesh meshes/arm.stl.bz2: an archive (.bz2) is not a mesh format read here; {FORMATS}"], id="bz2"),
     pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": _zip()}, "", [f"{HEAD}:3: specs/meshes/arm.dae: an archive, not a COLLADA file; {FORMATS}"], id="a-zip-named-dae", marks=NEEDS_CONVERTER),
     pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": DOCTYPE_DAE}, "", [f"{HEAD}:3: specs/meshes/arm.dae: a document type declaration (<!DOCTYPE ...>) is not allowed: XML entities are declared there and their expansion is unbounded; remove it"], id="a-dae-with-a-doctype", marks=NEEDS_CONVERTER),
+    pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": ZERO_UNIT_DAE}, "", [f"{HEAD}:3: specs/meshes/arm.dae: trimesh cannot convert it (Singular matrix)"], id="a-dae-in-units-of-zero-metres", marks=NEEDS_CONVERTER),
+    pytest.param('<?xml version="1.0" encoding="no-such"?>\n' + urdf(), {}, "", ["specs/arm.yaml:2:7: urdf: specs/arm.urdf: not well-formed XML: unknown encoding: no-such"], id="an-unknown-encoding"),
     # limits
     pytest.param(CHAIN, {}, "", [f"{HEAD}:{5 + MAX_URDF_LINKS - 2}: more than {MAX_URDF_LINKS} links, the limit (MuJoCo cannot compile a chain of bodies much deeper); a robot has a few dozen"], id="more-links-than-the-limit"),
     pytest.param(NESTED, {}, "", [f"{HEAD}:3: elements nest deeper than the limit of {MAX_URDF_DEPTH} levels; a URDF nests a few levels deep"], id="nested-visuals"),
