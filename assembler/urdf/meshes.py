@@ -30,6 +30,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from assembler.cache.settings import DIR_VARIABLE, cache_dir
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
@@ -194,11 +196,17 @@ def _convert(source: Path, data: bytes, target: Path) -> None:
             f"{display_path(source)}: the file holds no triangles; give the link another mesh"
         )
     try:
-        if scene.units not in (None, "m", "meter", "meters"):
-            scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
-        mesh = scene.to_mesh()
+        with np.errstate(all="ignore"):  # a NaN unit or transform: refused below, not warned about
+            if scene.units not in (None, "m", "meter", "meters"):
+                scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
+            mesh = scene.to_mesh()
     except Exception as error:  # numpy's and trimesh's errors on a unit of 0, a singular transform, ...
         raise MeshConversionError(f"{display_path(source)}: trimesh cannot convert it ({error})") from None
+    if not np.isfinite(mesh.vertices).all():
+        raise MeshConversionError(
+            f"{display_path(source)}: its coordinates are not finite numbers once in metres (a NaN or "
+            "infinite <unit>, transform or vertex); fix the file"
+        )
     # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
     _write_atomically(
         target,

@@ -104,6 +104,7 @@ CASES = [
     pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": _zip()}, "", [f"{HEAD}:3: specs/meshes/arm.dae: an archive, not a COLLADA file; {FORMATS}"], id="a-zip-named-dae", marks=NEEDS_CONVERTER),
     pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": DOCTYPE_DAE}, "", [f"{HEAD}:3: specs/meshes/arm.dae: a document type declaration (<!DOCTYPE ...>) is not allowed: XML entities are declared there and their expansion is unbounded; remove it"], id="a-dae-with-a-doctype", marks=NEEDS_CONVERTER),
     pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": ZERO_UNIT_DAE}, "", [f"{HEAD}:3: specs/meshes/arm.dae: trimesh cannot convert it (Singular matrix)"], id="a-dae-in-units-of-zero-metres", marks=NEEDS_CONVERTER),
+    pytest.param(mesh("meshes/arm.dae"), {"meshes/arm.dae": dae_text(meter="nan")}, "", [f"{HEAD}:3: specs/meshes/arm.dae: its coordinates are not finite numbers once in metres (a NaN or infinite <unit>, transform or vertex); fix the file"], id="a-dae-in-units-of-nan-metres", marks=NEEDS_CONVERTER),
     pytest.param('<?xml version="1.0" encoding="no-such"?>\n' + urdf(), {}, "", ["specs/arm.yaml:2:7: urdf: specs/arm.urdf: not well-formed XML: unknown encoding: no-such"], id="an-unknown-encoding"),
     # limits
     pytest.param(CHAIN, {}, "", [f"{HEAD}:{5 + MAX_URDF_LINKS - 2}: more than {MAX_URDF_LINKS} links, the limit (MuJoCo cannot compile a chain of bodies much deeper); a robot has a few dozen"], id="more-links-than-the-limit"),
