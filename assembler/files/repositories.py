@@ -53,6 +53,9 @@ DEFAULTS: dict[str, tuple[str, ...]] = {
 }
 """The keys of a declaration and the folders each names when it is not given."""
 
+EXAMPLES: dict[str, str] = {"allow": "meshes", "packages": "vendor/z1_description"}
+"""A folder each key could name, for messages (the others name folders of their own name)."""
+
 
 @dataclass(frozen=True)
 class SpecRepository:
@@ -144,7 +147,8 @@ def _folders(root: Path, where: str, key: str, settings: dict[str, Any]) -> tupl
     given = key in settings
     value = settings.get(key, DEFAULTS[key])
     if not isinstance(value, (list, tuple)) or not all(isinstance(item, str) for item in value):
-        raise SpecError(f'{where}: {key} must be a list of folder names, e.g. {key} = ["{key}"]')
+        example = EXAMPLES.get(key, key)
+        raise SpecError(f'{where}: {key} must be a list of folder names, e.g. {key} = ["{example}"]')
     folders = []
     for item in value:
         if "\0" in item or not item or os.path.isabs(item):
