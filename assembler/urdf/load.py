@@ -22,6 +22,7 @@ from assembler.errors import AssemblerWarning, MissingPackageError, MjcfError
 from assembler.files.paths import (
     PACKAGE_SCHEME,
     allowed_folders,
+    confine,
     display_path,
     homes_of,
     is_file,
@@ -51,11 +52,14 @@ DYNAMICS_ATTRIBUTES: dict[str, str] = {"damping": "damping", "friction": "fricti
 
 
 def _python_package_file(reference: str) -> Path | None:
+    """The file in the installed Python package the reference names, if it holds one; a path out of
+    the package is refused first, so the answer is the same whether or not that file exists."""
     name, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
     root = package_root(name) if name.isidentifier() else None
-    if root is None or not is_file(root / inner):
+    if root is None:
         return None
-    return locate_model_file(reference)
+    path = confine(root / inner, [root], f"{reference}: ", MjcfError)
+    return path if is_file(path) else None
 
 
 def locate_urdf_file(reference: str) -> Path:

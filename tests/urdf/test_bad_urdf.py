@@ -174,6 +174,20 @@ def test_a_urdf_reading_a_lab_file_through_a_folder_named_like_a_package_is_refu
     assert copied == []
 
 
+@pytest.mark.parametrize("target", ["etc/hostname", "etc/no-such-file"], ids=["existing", "missing"])
+def test_a_spec_urdf_out_of_a_python_package_is_refused_alike_whether_or_not_it_exists(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], target: str
+) -> None:
+    reference = "package://numpy/" + "../" * 30 + target  # enough ".." to reach / from any site-packages
+    lab = _lab(tmp_path, urdf(), {}, "")
+    (lab / "specs" / "arm.yaml").write_text(SPEC.replace("urdf: arm.urdf", f"urdf: {reference}"))
+    monkeypatch.chdir(lab)
+    assert main(["build", "specs/arm.yaml", "-o", "out.xml"]) == 1
+    assert capsys.readouterr().err.splitlines() == [
+        f"specs/arm.yaml:2:7: urdf: {reference}: /{target} {PACKAGE_OUTSIDE}"
+    ]
+
+
 @pytest.mark.parametrize(
     "urdf_field",
     ["../vendor/arm_pkg/urdf/arm.urdf", "package://arm_pkg/urdf/arm.urdf"],
