@@ -42,9 +42,17 @@ def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.M
 
 
 def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None:
-    """One joint equality per ``<mimic>``; a mimic of a joint that cannot move is an error."""
+    """One joint equality per ``<mimic>``; a mimic of itself or of a joint that cannot move is an error."""
     problems = []
     for mimic in mimics:
+        if mimic.leader == mimic.follower:  # MuJoCo's import drops it without a word
+            problems.append(
+                Problem(
+                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics itself; name another joint in "
+                    "its <mimic joint>, or remove the <mimic>"
+                )
+            )
+            continue
         joints = {name: spec.joint(name) for name in (mimic.follower, mimic.leader)}
         still = [name for name, joint in joints.items() if joint is None or joint.type not in MOVING]
         if still:

@@ -3,6 +3,7 @@ folders the user allowed; MJCF is refused before parsing when it declares a DTD 
 
 from __future__ import annotations
 
+import importlib
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -62,13 +63,29 @@ def test_absolute_mjcf_path_outside_is_refused(write: Write) -> None:
     assert str(caught.value) == f"{spec}:2:7: mjcf: {target} {OUTSIDE}"
 
 
-def test_a_file_that_appears_outside_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+def test_a_missing_file_outside_is_refused_as_an_existing_one_is(write: Write, tmp_path: Path) -> None:
+    # No existence oracle: a stranger's spec must not learn which files exist outside by the message.
     spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
-    (cls,) = assembler.register_specs(spec)  # nothing there yet: nothing to refuse
-    write("outside/twolink.xml", TWO_LINK_MJCF)
+    messages = []
+    for exists in (False, True):
+        if exists:
+            write("outside/twolink.xml", TWO_LINK_MJCF)
+        with pytest.raises(SpecError) as caught:
+            assembler.register_specs(spec)
+        messages.append(str(caught.value))
+    assert messages == [f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"] * 2
+
+
+def test_a_file_linked_out_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+    inside = write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n")
+    (cls,) = assembler.register_specs(spec)
+    target = write("outside/twolink.xml", TWO_LINK_MJCF)
+    inside.unlink()
+    inside.symlink_to(target)  # re-pointed between loading and reading
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
-    assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {inside} (a link to {target}) {OUTSIDE}"
 
 
 def test_a_symbolic_link_leading_out_is_refused_and_named(write: Write, tmp_path: Path) -> None:
@@ -140,6 +157,11 @@ def test_allow_paths_in_python_admits_a_folder(write: Write, tmp_path: Path) -> 
             "package://robosuite/" + "../" * 30 + "etc/hostname",
             "package://robosuite/" + "../" * 30 + "etc/hostname: /etc/hostname " + OUTSIDE,
             id="dotdot-out-of-the-package",
+        ),
+        pytest.param(  # the same line for a file that does not exist: no existence oracle
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file",
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file: /etc/no-such-file " + OUTSIDE,
+            id="dotdot-out-of-the-package-to-a-missing-file",
         ),
         pytest.param(
             "package://os.path/x.xml",
@@ -251,4 +273,30 @@ def test_shipped_specs_build_from_another_working_directory(
     assert _build(["build", "Sparrow7", "--base", "QuadrupedBase", "-o", "out.xml"], capsys) == (
         0,
         ["wrote out.xml"],
+    )
+
+
+def test_a_controller_file_a_spec_names_is_confined_too(write: Write, tmp_path: Path) -> None:
+    pytest.importorskip("robosuite")
+    controllers = importlib.import_module("assembler.robosuite.controllers")  # imports robosuite
+    write("outside/ctrl.json", '{"type": "BASIC", "body_parts": {}}')
+    write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write(
+        "specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\nrobosuite:\n  controller: ../outside/ctrl.json\n"
+    )
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(SpecError) as caught:
+        controllers.declared_config(cls)
+    assert str(caught.value) == f"{spec}:4:15: robosuite.controller: {tmp_path}/outside/ctrl.json {OUTSIDE}"
+
+
+def test_mjcf_declaring_an_unknown_encoding_is_one_line(write: Write, tmp_path: Path) -> None:
+    # expat raises LookupError, not ExpatError, for it: a traceback before issue 23.
+    write("specs/enc.xml", '<?xml version="1.0" encoding="no-such"?>\n' + TWO_LINK_MJCF)
+    (cls,) = assembler.register_specs(write("specs/enc.yaml", "name: Enc\nmjcf: enc.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0).check()
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/enc.yaml:2:7: mjcf: {tmp_path}/specs/enc.xml: not well-formed XML: "
+        "unknown encoding: no-such"
     )
