@@ -15,8 +15,8 @@ from assembler.cli import main
 from assembler.errors import MjcfError, RegistryError, SpecError
 from assembler.files.paths import ALLOW_VARIABLE, shipped_assets_dir, shipped_specs_dir
 from assembler.registry.lookup import REGISTERED_ROBOTS
-from tests.conftest import TWO_LINK_MJCF
-from tests.files.test_confinement import MESH_MJCF, OUTSIDE, TETRA
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
+from tests.files.test_confinement import MESH_MJCF, OUTSIDE
 
 Write = Callable[[str, str], Path]
 
@@ -87,7 +87,7 @@ def test_a_declaration_above_the_checkout_is_not_its_own(write: Write, tmp_path:
 
 
 def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: Path) -> None:
-    write("lab/secrets/tetra.obj", TETRA)
+    write("lab/secrets/tetra.obj", TETRAHEDRON_OBJ)
     write("lab/assets/arm/meshy.xml", MESH_MJCF.format(meshdir="../../secrets", file="tetra.obj"))
     spec = write("lab/specs/meshy.yaml", "name: Meshy\nmjcf: ../assets/arm/meshy.xml\n")
     marker = write("lab/robot-assembler.toml", "")
