@@ -25,6 +25,7 @@ from assembler.errors import MjcfError, Problem
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
+from assembler.mjcf.asset_names import name_assets_after_files
 from assembler.mjcf.attach_compat import refuse_unattachable
 from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.file_check import check_as_mujoco
@@ -202,6 +203,7 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
+    name_assets_after_files(spec)  # before attaching prefixes the names: MuJoCo derives them at compile
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
