@@ -26,7 +26,7 @@ from assembler.files.paths import allowed_folders, confine, display_path, homes_
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.asset_names import name_assets_after_files
-from assembler.mjcf.attach_compat import refuse_unattachable
+from assembler.mjcf.attach_compat import refuse_unattachable, settle_default_site_materials
 from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
@@ -207,6 +207,7 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
+    spec = settle_default_site_materials(spec)
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
     check_as_mujoco(_parse(path, fixes)[1], spec, shown, lines)
     refuse_unattachable(spec, shown)
