@@ -133,17 +133,29 @@ class PartModel(metaclass=RegisteringMeta):
         return self.prepared().actuators
 
     def part_mjspec(self) -> mujoco.MjSpec:
-        """A fresh copy of the prepared spec, with joint values and collision colours applied."""
+        """A fresh copy of the prepared spec, with joint values applied, and robosuite's collision
+        colours where the spec asks for them (``collision_colour: robosuite``)."""
         mjspec = self.prepared_mjspec.copy()
         for name, values in self.joint_values.items():
             joint = mjspec.joint(name)
             for attribute, joint_value in values.items():
                 set_joint_attribute_value(joint, attribute, joint_value.value)
-        for geom in mjspec.geoms:
-            if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
-                geom.rgba = self.collision_rgba
-                geom.material = ""
+        if self.spec.collision_colour == "robosuite":
+            for geom in mjspec.geoms:
+                if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
+                    geom.rgba = self.collision_rgba
+                    geom.material = ""
         return mjspec
+
+    def conventions_applied(self) -> list[str]:
+        """What the part's build changes in its file's look by a convention the spec asks for."""
+        if self.spec.collision_colour != "robosuite":
+            return []
+        colour = " ".join(f"{value:g}" for value in self.collision_rgba)
+        return [
+            f"collision geoms (group 0) lose their materials and are coloured {colour} "
+            "(collision_colour: robosuite)"
+        ]
 
     def part_inputs(self) -> PartInputs:
         """What this part contributes to an assembly's cache key (no MJCF is read)."""

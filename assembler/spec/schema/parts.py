@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -63,6 +63,11 @@ class PartSpec(StrictModel):
     contact_excludes: list[tuple[str, str]] = Field(default_factory=list)
     """Pairs of bodies (as named in the file) that never collide, e.g. links whose collision meshes
     overlap where they meet (MuJoCo's <contact><exclude>)."""
+
+    collision_colour: Literal["file", "robosuite"] = "file"
+    """file: every geom keeps the colour and material its file gives; robosuite: collision geoms
+    (group 0) lose their material and take robosuite's collision colour (green for robots, blue for
+    grippers, yellow for mounts), as in robosuite's own models (`assembler inspect` says so)."""
 
     @model_validator(mode="after")
     def _one_source_file(self) -> PartSpec:
