@@ -18,7 +18,7 @@ from numpy.typing import NDArray
 from assembler.cache.inputs import JointEdit, PartInputs
 from assembler.cache.mesh_swap import compile_from_store
 from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
-from assembler.files.paths import locate_model_file
+from assembler.files.paths import display_path, locate_model_file
 from assembler.mjcf import census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.keyframe import compile_with_home
@@ -33,6 +33,7 @@ from assembler.spec.documents.problems import reading_order
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import PartSpec
 from assembler.urdf import load_urdf, locate_urdf_file
+from assembler.urdf.postprocess import unbalanced_inertias
 
 FloatArray = NDArray[np.float64]
 
@@ -79,7 +80,9 @@ class PartModel(metaclass=RegisteringMeta):
         field = FieldPath((self.spec.source_field,))
         try:
             if self.spec.urdf is not None:
-                return load_urdf(self.spec.urdf, self.spec.balance_inertia)
+                source = load_urdf(self.spec.urdf, self.spec.balance_inertia)
+                self._refuse_unbalanced_inertias(source, field)
+                return source
             return load_mjcf(self.spec.source_file, self.spec.mjcf_fixes)
         except MissingPackageError as error:
             located = [Problem(p.message, self.locate(field), field) for p in error.problems]
@@ -87,6 +90,19 @@ class PartModel(metaclass=RegisteringMeta):
         except MjcfError as error:
             located = [Problem(p.message, self.locate(field), field) for p in error.problems]
             raise type(error)(located) from None
+
+    def _refuse_unbalanced_inertias(self, source: MjcfSource, field: FieldPath) -> None:
+        """A URDF whose link inertias MuJoCo would refuse at the assembly's compile, refused here at
+        the spec's line with the spec's own remedy (MuJoCo's message names its ``balanceinertia``)."""
+        unbalanced = unbalanced_inertias(source.pristine)
+        if unbalanced:
+            message = (
+                f"{display_path(source.path)}: the inertia of link {', '.join(unbalanced)} violates "
+                "A + B >= C, which MuJoCo refuses; set balance_inertia: true in the spec (each becomes "
+                "isotropic at its mean moment, as MuJoCo's balanceinertia does), "
+                "or correct the URDF's <inertia>"
+            )
+            raise MjcfError([Problem(message, self.locate(field), field)])
 
     def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
         """Names the spec gives that its MJCF lacks; each family adds its own fields."""
