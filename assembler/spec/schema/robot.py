@@ -74,7 +74,9 @@ class JointGroups(StrictModel):
     """Joints that move the whole robot (mobile base joints inside the robot's own file)."""
 
     right: list[str] = Field(default_factory=list)
-    """Joints of the right arm; with no arm lists, every joint not in another group is an arm joint."""
+    """Joints of the right arm. With arm lists, a joint in no list belongs to no group (no controller
+    drives it, e.g. a jaw declared as the gripper); with none, every joint not in another group is an
+    arm joint."""
 
     left: list[str] = Field(default_factory=list)
     """Joints of the left arm (bimanual robots)."""
