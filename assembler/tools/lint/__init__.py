@@ -3,6 +3,7 @@
 =====  ========  ===================================================================
 code   severity  finding
 =====  ========  ===================================================================
+RA002  warning   a spec's lint.acknowledge entry that matches no finding (delete it)
 RA101  error     parts overlap at the home pose (e.g. a gripper inside its wrist)
 RA201  warning   mass implausible for the geoms' volume (density outside 100..20000)
 RA202  error     zero principal inertia, or an authored inertia that violates A+B>=C
@@ -23,12 +24,15 @@ RA704  warning   arm without the {arm}_center site robosuite's composite control
 =====  ========  ===================================================================
 
 Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
+A finding a part's spec acknowledges (``lint.acknowledge``, with a reason) is reported as
+acknowledged and fails nothing (:mod:`assembler.tools.lint.acknowledgements`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
+from assembler.tools.lint.acknowledgements import acknowledge
 from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
 from assembler.tools.lint.armature import tiny_index_armature
 from assembler.tools.lint.finding import SEVERITIES, Finding, Severity
@@ -69,9 +73,10 @@ CHECKS: tuple[Check, ...] = (
 
 
 def lint(target: LintTarget) -> list[Finding]:
-    """Every finding of every check on ``target``, errors first, then by code."""
-    findings = [finding for check in CHECKS for finding in check(target)]
-    return sorted(findings, key=lambda f: (SEVERITIES.index(f.severity), f.code))
+    """Every finding of every check on ``target``, acknowledged ones marked: those that fail first
+    (errors), then by severity and code."""
+    findings = acknowledge(target, [finding for check in CHECKS for finding in check(target)])
+    return sorted(findings, key=lambda f: (not f.fails, SEVERITIES.index(f.severity), f.code))
 
 
 __all__ = [
