@@ -15,6 +15,7 @@ from assembler.models.preparation import PreparedPart
 from assembler.models.registering import Registry
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import GripperSpec
+from assembler.spec.schema.gripper import ROBOSUITE_SENSORS, ROBOSUITE_SITES
 
 REGISTERED_GRIPPERS: Registry[GripperModel] = Registry("gripper")
 """Every registered gripper class by name."""
@@ -103,8 +104,11 @@ class GripperModel(PartModel):
 
     @property
     def important_sites(self) -> dict[str, str]:
-        """Role -> prefixed site name."""
-        return {role: self.naming_prefix + name for role, name in self.spec.important_sites.items()}
+        """Role -> prefixed site name: robosuite's roles whose sites the MJCF has, then the spec's."""
+        present = {r: n for r, n in ROBOSUITE_SITES.items() if self.prepared_mjspec.site(n) is not None}
+        return {
+            role: self.naming_prefix + name for role, name in {**present, **self.spec.important_sites}.items()
+        }
 
     @property
     def important_geoms(self) -> dict[str, list[str]]:
@@ -113,8 +117,12 @@ class GripperModel(PartModel):
 
     @property
     def important_sensors(self) -> dict[str, str]:
-        """Role -> prefixed sensor name."""
-        return {role: self.naming_prefix + name for role, name in self.spec.important_sensors.items()}
+        """Role -> prefixed sensor name: robosuite's roles whose sensors the MJCF has, then the spec's."""
+        present = {r: n for r, n in ROBOSUITE_SENSORS.items() if self.prepared_mjspec.sensor(n) is not None}
+        return {
+            role: self.naming_prefix + name
+            for role, name in {**present, **self.spec.important_sensors}.items()
+        }
 
     @property
     def eef_body(self) -> str:
