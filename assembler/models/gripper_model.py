@@ -6,9 +6,11 @@ import functools
 from collections.abc import Sequence
 from typing import Any, ClassVar
 
+import mujoco
 import numpy as np
 
 from assembler.errors import AssemblerError, Problem
+from assembler.mjcf.compose import place_root
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
@@ -63,6 +65,14 @@ class GripperModel(PartModel):
             for name in spec.actions.hold:
                 check.actuator(FieldPath(("actions", "hold", name)), name)
         return [*super()._name_problems(prepared), *check.problems]
+
+    def part_mjspec(self) -> mujoco.MjSpec:
+        """The part's spec (see :meth:`PartModel.part_mjspec`), its root at the origin if the spec
+        asks for it (``root_pose: reset``)."""
+        mjspec = super().part_mjspec()
+        if self.spec.root_pose == "reset":
+            place_root(mjspec, (0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
+        return mjspec
 
     @property
     def naming_prefix(self) -> str:

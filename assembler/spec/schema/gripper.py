@@ -37,6 +37,11 @@ class GripperSpec(PartSpec):
     """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
     speed)."""
 
+    root_pose: Literal["file", "reset"] = "file"
+    """file: the root body keeps the pose its file gives it, relative to the hand it is mounted on (as
+    robosuite's grippers do); reset: the root sits at the hand's origin, unrotated, for a hand whose
+    file places it somewhere in a scene (lint RA102). A robot's gripper_mount overrides either."""
+
     important_sites: dict[str, str] = Field(default_factory=dict)
     """Role -> site name; every site named must exist in the MJCF. robosuite's roles grip_site and
     grip_cylinder need no entry: they are the sites grip_site and grip_site_cylinder where the MJCF
