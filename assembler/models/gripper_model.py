@@ -9,8 +9,10 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
-from assembler.errors import AssemblerError, Problem
+from assembler.errors import AssemblerError, MjcfError, Problem
 from assembler.mjcf.compose import place_root
+from assembler.mjcf.source import MjcfSource
+from assembler.mjcf.subtree import subtree_source
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
@@ -65,6 +67,17 @@ class GripperModel(PartModel):
             for name in spec.actions.hold:
                 check.actuator(FieldPath(("actions", "hold", name)), name)
         return [*super()._name_problems(prepared), *check.problems]
+
+    def _load_source(self) -> MjcfSource:
+        """The gripper's MJCF: the whole file, or the subtree of the spec's ``root_body``."""
+        source = super()._load_source()
+        if self.spec.root_body is None:
+            return source
+        try:
+            return subtree_source(source, self.spec.root_body)
+        except MjcfError as error:
+            field = FieldPath(("root_body",))
+            raise MjcfError([Problem(p.message, self.locate(field), field) for p in error.problems]) from None
 
     def part_mjspec(self) -> mujoco.MjSpec:
         """The part's spec (see :meth:`PartModel.part_mjspec`), its root at the origin if the spec

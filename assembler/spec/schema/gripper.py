@@ -37,6 +37,11 @@ class GripperSpec(PartSpec):
     """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
     speed)."""
 
+    root_body: str | None = None
+    """The body of the MJCF the gripper is made of, with everything below it and the actuators and
+    sensors of its joints: a jaw inside an arm's own file (SO-101, Fetch), which the robot's spec
+    cuts from the arm with remove_bodies; null: the file's one root body."""
+
     root_pose: Literal["file", "reset"] = "file"
     """file: the root body keeps the pose its file gives it, relative to the hand it is mounted on (as
     robosuite's grippers do); reset: the root sits at the hand's origin, unrotated, for a hand whose

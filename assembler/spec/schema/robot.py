@@ -112,6 +112,10 @@ class RobotSpec(PartSpec):
     remove_actuation: list[str] = Field(default_factory=list)
     """Joints (names or globs) removed with everything that drives or measures them (legged robots)."""
 
+    remove_bodies: list[str] = Field(default_factory=list)
+    """Bodies removed with everything below them and what drives or measures it: a jaw inside the
+    arm's own file, made the robot's gripper by a gripper spec with root_body (docs/spec.md)."""
+
     remove_free_joint: bool = False
     """Remove the root's free joint, welding the robot to its base or the world."""
 
