@@ -9,6 +9,7 @@ their sources, and hands out fresh copies of the prepared spec to attach into an
 from __future__ import annotations
 
 import json
+import warnings
 from typing import Any, ClassVar
 
 import mujoco
@@ -17,7 +18,7 @@ from numpy.typing import NDArray
 
 from assembler.cache.inputs import JointEdit, PartInputs
 from assembler.cache.mesh_swap import compile_from_store
-from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
+from assembler.errors import AssemblerWarning, Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.files.paths import display_path, locate_model_file
 from assembler.mjcf import census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
@@ -36,6 +37,9 @@ from assembler.urdf import load_urdf, locate_urdf_file
 from assembler.urdf.postprocess import unbalanced_inertias
 
 FloatArray = NDArray[np.float64]
+
+_WARNED: dict[Any, Any] = {}
+"""The warnings already shown (Python's registry for warn_explicit), so each is shown once."""
 
 COLLISION_GROUP = 0
 VISUAL_GROUP = 1
@@ -70,6 +74,15 @@ class PartModel(metaclass=RegisteringMeta):
         if cls.loaded is not None:
             return cls.loaded.location(path)
         return Location(f"<class {cls.__qualname__}>")
+
+    @classmethod
+    def warn(cls, path: FieldPath, message: str) -> None:
+        """Warn (an :class:`AssemblerWarning`) at a field of this part's spec: Python then shows the
+        spec's file, line and text, not the line of our code that warned. Once per spec line and message."""
+        where = cls.locate(path)
+        warnings.warn_explicit(
+            message, AssemblerWarning, where.file, where.line or 1, module=where.file, registry=_WARNED
+        )
 
     @classmethod
     def spec_problem(cls, path: FieldPath, message: str) -> Problem:
