@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     folder = display_path(args.output)
     models = f"{run.distinct} distinct model{'s' if run.distinct != 1 else ''}"
     written = f"wrote {len(run.written)} of {len(run.results)} variants of {plan.robot}"
-    print(f"{written} to {folder} ({manifest}): {models}")
+    print(f"{written} to {folder} ({manifest}): {models}", file=sys.stderr)  # as every command's "wrote"
     for key in run.no_effect:
         print(
             f"warning: {plan.flag_of(key)} {key} changes nothing in the compiled model (variants that differ "

@@ -128,16 +128,25 @@ def _moments(body: mujoco.MjsBody) -> tuple[NDArray[np.float64], bool]:
     return np.linalg.eigvalsh(matrix), True
 
 
+def unbalanced_inertias(spec: mujoco.MjSpec) -> list[str]:
+    """The bodies whose given inertia violates A + B >= C (MuJoCo refuses them without balanceinertia)."""
+    return [body.name for body in spec.bodies[1:] if _unbalanced(body)]
+
+
+def _unbalanced(body: mujoco.MjsBody) -> bool:
+    if body.mass <= 0:
+        return False
+    low, middle, high = np.sort(_moments(body)[0])
+    return bool(low + middle < high)
+
+
 def balance_inertias(spec: mujoco.MjSpec) -> list[str]:
     """Make every inertia that violates A + B >= C isotropic at its mean moment; the bodies changed."""
     changed = []
     for body in spec.bodies[1:]:
-        if body.mass <= 0:
+        if not _unbalanced(body):
             continue
         moments, full = _moments(body)
-        low, middle, high = np.sort(moments)
-        if low + middle >= high:
-            continue
         mean = float(np.mean(moments))
         if full:
             body.fullinertia = [mean, mean, mean, 0.0, 0.0, 0.0]

@@ -456,7 +456,12 @@ def test_an_included_file_edited_between_two_robots_is_read_again(mesh_arm: Path
     edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="1 0 0 1"/></default></mujoco>', 3600)
     edit(mesh_arm / "meshy.xml", MESH_ARM.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'), 3600)
     assembler.register_specs(mesh_arm)
-    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.5, 0.0, 1.0]  # recoloured
+    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [
+        1.0,
+        0.0,
+        0.0,
+        1.0,
+    ]  # the included default's
     edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="0 0 1 1" group="1"/></default></mujoco>', 30)
     assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.0, 1.0, 1.0]
 
