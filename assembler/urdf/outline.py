@@ -2,7 +2,7 @@
 
 expat reads the text once and builds nothing (:func:`assembler.files.plain_xml.stream`). It stops
 at the limits of :mod:`assembler.files.limits` (elements nested deeper than :data:`MAX_URDF_DEPTH`,
-more links than :data:`MAX_URDF_LINKS`), finds two links or two joints of one name (MuJoCo's import
+more links or joints than :data:`MAX_URDF_LINKS`), finds two links or two joints of one name (MuJoCo's import
 or our own post-processing would otherwise fail with a traceback), and records the line of every
 element the messages name: meshes, joints and the children of the ``<mujoco>`` extension element.
 """
@@ -35,7 +35,7 @@ def outline(data: bytes, shown: str, paths: Collection[str]) -> Outline:
     stack: list[str] = []
     first: dict[tuple[str, str], int] = {}
     problems: list[Problem] = []
-    links = [0]  # top-level <link> elements so far
+    counts = dict.fromkeys(NAMED, 0)  # top-level <link> and <joint> elements so far
 
     def start(name: str, attributes: dict[str, str], line: int) -> None:
         stack.append(name)
@@ -51,10 +51,10 @@ def outline(data: bytes, shown: str, paths: Collection[str]) -> Outline:
             found.extension.append((name, line))
         if len(stack) != 2 or name not in NAMED:
             return
-        links[0] += name == "link"
-        if links[0] > MAX_URDF_LINKS:
+        counts[name] += 1
+        if counts[name] > MAX_URDF_LINKS:  # a tree of links has one joint fewer: one limit bounds both
             raise StopReading(
-                f"{shown}:{line}: more than {MAX_URDF_LINKS} links, the limit (MuJoCo cannot compile a "
+                f"{shown}:{line}: more than {MAX_URDF_LINKS} {name}s, the limit (MuJoCo cannot compile a "
                 "chain of bodies much deeper); a robot has a few dozen"
             )
         key = (name, attributes.get("name", ""))

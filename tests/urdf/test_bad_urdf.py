@@ -72,6 +72,12 @@ def _zip() -> bytes:
 CHAIN = urdf(
     more="".join(f'  <link name="c{i}"/>\n' for i in range(MAX_URDF_LINKS))  # 2 + 1,000 links
 )
+JOINTS = urdf(
+    more="".join(
+        f'  <joint name="k{i}" type="fixed"><parent link="l0"/><child link="l1"/></joint>\n'
+        for i in range(MAX_URDF_LINKS)
+    )  # 1 + 1,000 joints
+)
 NESTED = urdf(visual="<visual>" * 5000 + "</visual>" * 5000)
 VENDOR_PACKAGE: dict[str, str | bytes] = {
     "vendor/arm_pkg/package.xml": "<package><name>arm_pkg</name></package>",
@@ -108,6 +114,7 @@ CASES = [
     pytest.param('<?xml version="1.0" encoding="no-such"?>\n' + urdf(), {}, "", ["specs/arm.yaml:2:7: urdf: specs/arm.urdf: not well-formed XML: unknown encoding: no-such"], id="an-unknown-encoding"),
     # limits
     pytest.param(CHAIN, {}, "", [f"{HEAD}:{5 + MAX_URDF_LINKS - 2}: more than {MAX_URDF_LINKS} links, the limit (MuJoCo cannot compile a chain of bodies much deeper); a robot has a few dozen"], id="more-links-than-the-limit"),
+    pytest.param(JOINTS, {}, "", [f"{HEAD}:{5 + MAX_URDF_LINKS - 1}: more than {MAX_URDF_LINKS} joints, the limit (MuJoCo cannot compile a chain of bodies much deeper); a robot has a few dozen"], id="more-joints-than-the-limit"),
     pytest.param(NESTED, {}, "", [f"{HEAD}:3: elements nest deeper than the limit of {MAX_URDF_DEPTH} levels; a URDF nests a few levels deep"], id="nested-visuals"),
     pytest.param(urdf(more='  <joint name="j1" type="fixed"><parent link="l0"/><child link="l1"/></joint>\n'), {}, "", [f"{HEAD}:5: a second joint named 'j1' (the first is on line 4); joint names must be unique"], id="two-joints-of-one-name"),
     pytest.param(urdf(more=f'  <link name="l1">{INERTIAL}</link>\n'), {}, "", [f"{HEAD}:5: a second link named 'l1' (the first is on line 3); link names must be unique"], id="two-links-of-one-name"),
