@@ -35,7 +35,10 @@ def test_new_writes_a_spec_that_validates_and_builds_as_written(
     before = model.read_bytes()
     spec = model.with_name("twolink.yaml")
     assert _new(model, spec) == 0
-    assert capsys.readouterr().out.startswith(f"wrote {spec}: robot Twolink; check each 'guess:'")
+    assert capsys.readouterr().out == (
+        f"wrote {spec}: robot Twolink (validated and compiled); check each 'guess:' and settle each "
+        "'decide:' comment\n"
+    )
     fields = yaml.safe_load(spec.read_text())
     assert fields["mjcf"] == "twolink.xml"
     assert fields["eef_bodies"] == {"right": "right_hand"}
@@ -127,3 +130,25 @@ def test_a_model_file_mujoco_refuses_is_one_line_naming_it(
     (line,) = capsys.readouterr().err.strip().splitlines()
     assert line.startswith(f"{model}:") and "nope" in line
     assert not model.with_name("broken.yaml").exists()
+
+
+SCENE = TWO_LINK_MJCF.replace(
+    "  <worldbody>\n",
+    '  <worldbody>\n    <body name="table" pos="1 0 0"><geom type="box" size="0.3 0.3 0.4"/></body>\n',
+)
+"""The two-link arm in a scene with a table beside it (as gymnasium-robotics' task files come)."""
+
+
+def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/scene.xml", SCENE)
+    spec = model.with_name("scene.yaml")
+    assert _new(model, spec) == 1
+    out, err = capsys.readouterr()
+    assert out == f"wrote {spec}: robot Twolink; it does not build as written:\n"
+    assert err.splitlines() == [
+        f"{spec}:13:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
+        "wrap the parts in one root body"
+    ]
+    assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Literal
 
 from assembler.errors import AssemblerError
-from assembler.files.paths import display_path
+from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.writing import write_atomically
 from assembler.registry.catalog import load_shipped_specs
 from assembler.registry.lookup import registered_names
@@ -60,6 +60,30 @@ def _header(file: ModelFile) -> list[str]:
     ]
 
 
+def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
+    """``mjcf:`` or ``urdf:``, with what stops the file from being one robot, if anything."""
+    entry = Entry(file.format, spec_reference(file, spec_path.parent))
+    model = file.model
+    roots = [model.body(b).name for b in range(1, model.nbody) if model.body_parentid[b] == 0]
+    if len(roots) > 1:
+        entry.decide(
+            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}); a spec's "
+            "file holds one robot under one root body: point it at a file of the robot alone"
+        )
+    if not spec_reference(file, spec_path.parent).startswith(PACKAGE_SCHEME) and not _below(
+        file.path, spec_path.parent
+    ):
+        entry.decide(
+            "the file is outside the spec's folder, which a spec may not read by default: move the spec "
+            "beside it, declare a spec repository, or pass --allow-path (SECURITY.md)"
+        )
+    return entry
+
+
+def _below(path: Path, folder: Path) -> bool:
+    return path.resolve().is_relative_to(folder.resolve())
+
+
 def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> NewSpec:
     """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
     are relative to its folder); ``kind`` robot or gripper, guessed when None."""
@@ -82,7 +106,7 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> New
     entries += [
         named,
         Entry("description", f"{source} from {Path(file.reference).name}, as `assembler new` read it."),
-        Entry(file.format, spec_reference(file, spec_path.parent)),
+        _file_entry(file, spec_path),
     ]
     tree = read_tree(file.model, hand=chosen == "gripper")
     entries += gripper_entries(file, tree) if chosen == "gripper" else robot_entries(file, tree)
