@@ -147,8 +147,9 @@ def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
     assert _new(model, spec) == 1
     out, err = capsys.readouterr()
     assert out == f"wrote {spec}: robot Twolink; it does not build as written:\n"
+    line = spec.read_text().splitlines().index(f"mjcf: {model.name}") + 1
     assert err.splitlines() == [
-        f"{spec}:13:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
+        f"{spec}:{line}:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
         "wrap the parts in one root body"
     ]
     assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()

@@ -54,7 +54,8 @@ def _kind(file: ModelFile) -> tuple[Kind, str]:
 
 def _header(file: ModelFile) -> list[str]:
     return [
-        f"Written by `assembler new` from {display_path(file.path)}; nothing in that file was changed.",
+        "Written by `assembler new` from this file, which it did not change:",
+        f"  {display_path(file.path)}",
         "'guess:' marks a value read off the file (check it); 'decide:' marks what the file cannot tell",
         "(set the field it names). docs/add-your-robot.md explains each.",
     ]

@@ -112,12 +112,11 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
             "in joint_groups, a humanoid morphology: humanoid"
         )
     )
-    how = (
-        "named like a hand"
-        if tree.eef_by_name
-        else ("where the fingers branch off" if tree.fingers else "the last link of the arm's chain")
-    )
-    eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"the body {how}; grippers are mounted here")
+    if tree.eef_by_name:
+        how = "the body named like a hand below the last arm joint"
+    else:
+        how = "the body where the fingers branch off" if tree.fingers else "the last link of the arm's chain"
+    eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"{how}; grippers are mounted here")
     if tree.grip_site:
         eef.guess(f"the file's grip frame is the site {tree.grip_site}")
     entries.append(eef)
