@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import assembler
+from assembler.errors import AssemblerError
 from assembler.models import RobotModel
 from assembler.tools.render.picture import render_views
 from assembler.tools.render.stage import build_stage
@@ -42,7 +43,8 @@ def _cases(stage: str, arms_only: bool = False) -> list[Any]:
         if arms_only and not case.arm:
             continue
         defect = case.blocked(stage)
-        marks = [pytest.mark.xfail(reason=defect, strict=True)] if defect else []
+        error = ValueError if stage in case.tracebacks else AssemblerError
+        marks = [pytest.mark.xfail(reason=defect, raises=error, strict=True)] if defect else []
         params.append(pytest.param(case, id=case.id, marks=marks))
     return params
 
