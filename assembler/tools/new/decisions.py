@@ -88,6 +88,11 @@ def robosuite_entry(file: ModelFile, arm: tuple[str, ...]) -> Entry:
         bare = [name for name, a in zip(bare, servos, strict=True) if not has_force_range(model, a)]
         if bare:
             entry.decide(f"give the servos {_short(bare)} a forcerange in the model (actuators: in the spec)")
+    if "right_center" not in {model.site(s).name for s in range(model.nsite)}:
+        entry.guess(
+            "the file has no site right_center, the arm's origin robosuite's controllers read: robosuite's "
+            "bridge adds one on the body the arm's first link hangs from (lint RA704)"
+        )
     entry.guess(
         f"robosuite stands the arm on the {STAND_IN_BASE} (without one it would stand on the floor, "
         "below robosuite's tables); set default_base to build it on a base everywhere"
@@ -134,8 +139,9 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     )
     if tree.fingers:
         joints.decide(
-            f"{_short(tree.fingers)} move a jaw or fingers that are part of this file: they are in no group, "
-            "so robosuite's arm controller leaves them alone"
+            f"{_short(tree.fingers)} move a jaw or fingers that are part of this file: they are listed in no "
+            "group, so that robosuite's arm controller does not drive them; list them under right: if it "
+            "should"
         )
     entries.append(joints)
     if tree.fingers:
