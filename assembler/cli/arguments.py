@@ -255,7 +255,10 @@ def _render(parser: argparse.ArgumentParser) -> None:
 def _new(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("model_file", help="the vendor's MJCF (.xml) or URDF (.urdf) file; it is not changed")
     parser.add_argument(
-        "-o", "--output", metavar="SPEC", help="spec file to write (default: <file name>.yaml here)"
+        "-o",
+        "--output",
+        metavar="SPEC",
+        help="spec file to write (default: <spec name in snake case>.yaml here)",
     )
     parser.add_argument(
         "--kind", choices=("robot", "gripper"), help="a robot arm or a hand (default: guessed from the names)"
