@@ -63,8 +63,10 @@ def _compiled(part: Any) -> mujoco.MjModel:
 
 @pytest.mark.parametrize("case", _cases("build"))
 def test_new_writes_a_spec_that_validates_and_builds_as_written(case: Case, corpus: Corpus) -> None:
-    model = _compiled(_part(case, corpus.name(case)))
+    part = _part(case, corpus.name(case))
+    model = _compiled(part)
     assert model.njnt > 0 and model.nbody > 2
+    assert part.spec.source_file == f"package://{case.package}/{case.file}"  # the installed file, not a copy
 
 
 JAWS = ("so101", "so101_urdf", "fetch")
