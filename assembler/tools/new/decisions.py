@@ -32,7 +32,7 @@ def _actuated_joints(model: mujoco.MjModel) -> dict[str, int]:
     """Joint name -> the actuator driving it, for actuators with a joint transmission."""
     driven = {}
     for actuator in range(model.nu):
-        if model.actuator_trntype[actuator] == mujoco.mjtTrn.mjTRN_JOINT:
+        if int(model.actuator_trntype[actuator]) == int(mujoco.mjtTrn.mjTRN_JOINT):
             name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.actuator_trnid[actuator, 0]))
             driven[name or ""] = actuator
     return driven

@@ -20,7 +20,8 @@ SAFETY = 2.0
 FLOOR = 1.0
 """The smallest guessed limit, in N m or N: a finger's static load alone would not move it."""
 
-SCALAR = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
+SCALAR = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+"""Joint types holding one value, as integers: on MuJoCo 4 an array item is not ``in`` a tuple of enums."""
 
 
 @dataclass(frozen=True)
@@ -38,7 +39,7 @@ def joint_id(model: mujoco.MjModel, name: str) -> int:
 
 def scalar_joints(model: mujoco.MjModel, names: Sequence[str]) -> bool:
     """Whether every named joint holds one value (hinge or slide), so init_qpos can list them."""
-    return all(model.jnt_type[joint_id(model, name)] in SCALAR for name in names)
+    return all(int(model.jnt_type[joint_id(model, name)]) in SCALAR for name in names)
 
 
 def home_pose(model: mujoco.MjModel, names: Sequence[str]) -> tuple[list[float], list[str]]:
@@ -86,7 +87,7 @@ def torque_limit(model: mujoco.MjModel, data: mujoco.MjData, name: str) -> Limit
             return Limit(max(abs(low), abs(high)), True)
     bodies = _subtree_bodies(model, int(model.jnt_bodyid[joint]))
     masses = model.body_mass[bodies]
-    if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_SLIDE:
+    if int(model.jnt_type[joint]) == int(mujoco.mjtJoint.mjJNT_SLIDE):
         load = float(masses.sum())
     else:
         distances = np.linalg.norm(data.xipos[bodies] - data.xanchor[joint], axis=1)

@@ -28,7 +28,8 @@ PART_WORDS: dict[str, re.Pattern[str]] = {
 }
 """Body-part groups recognized by joint name (robosuite's own name rules; a neck is a head's)."""
 
-FREE = mujoco.mjtJoint.mjJNT_FREE
+FREE = int(mujoco.mjtJoint.mjJNT_FREE)
+"""As an integer: on MuJoCo 4 enums compare unreliably with the items of model arrays."""
 
 
 @dataclass(frozen=True)
@@ -112,7 +113,7 @@ def _grip_site(model: mujoco.MjModel, top: int) -> str | None:
 
 def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
     """The guesses for ``model``: a robot's arm and parts, or (``hand``) a gripper's grip frame."""
-    joints = [j for j in range(model.njnt) if model.jnt_type[j] != FREE]
+    joints = [j for j in range(model.njnt) if int(model.jnt_type[j]) != FREE]
     names = {j: _name(model, mujoco.mjtObj.mjOBJ_JOINT, j) for j in joints}
     roots = [b for b in range(1, model.nbody) if model.body_parentid[b] == 0]
     if hand:  # the world child holding the most joints (a scene file also has a floor, a table...)
