@@ -153,3 +153,13 @@ def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
         "wrap the parts in one root body"
     ]
     assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()
+
+
+def test_a_name_a_registered_spec_has_is_not_taken_again(write: Callable[[str, str], Path]) -> None:
+    model = write("robots/panda.xml", TWO_LINK_MJCF.replace('model="twolink"', 'model="panda"'))
+    spec = model.with_name("panda.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["name"] == "PandaArm"  # robosuite's Panda has a shipped spec
+    assert (
+        "# guess: Panda is the name of a registered spec or of a robosuite class already" in spec.read_text()
+    )
