@@ -163,3 +163,40 @@ def test_a_name_a_registered_spec_has_is_not_taken_again(write: Callable[[str, s
     assert (
         "# guess: Panda is the name of a registered spec or of a robosuite class already" in spec.read_text()
     )
+
+
+MIMIC_URDF = """\
+<robot name="pincer_arm">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <link name="link1"><inertial><origin xyz="0 0 0.2"/><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin xyz="0 0 0.2"/><geometry><cylinder radius="0.03" length="0.4"/></geometry></collision></link>
+  <link name="left_finger"><inertial><mass value="0.1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="right_finger"><inertial><mass value="0.1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="joint1" type="revolute"><parent link="base"/><child link="link1"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="40" velocity="2"/></joint>
+  <joint name="left_finger_joint" type="prismatic"><parent link="link1"/><child link="left_finger"/>
+    <origin xyz="0 0.02 0.4"/><axis xyz="0 1 0"/><limit lower="0" upper="0.04" effort="20" velocity="0.1"/></joint>
+  <joint name="right_finger_joint" type="prismatic"><parent link="link1"/><child link="right_finger"/>
+    <origin xyz="0 -0.02 0.4"/><axis xyz="0 -1 0"/><limit lower="0" upper="0.04" effort="20" velocity="0.1"/>
+    <mimic joint="left_finger_joint" multiplier="1" offset="0"/></joint>
+</robot>
+"""
+"""A one-joint arm with a jaw of two fingers, the second following the first (URDF <mimic>)."""
+
+
+def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
+    write: Callable[[str, str], Path],
+) -> None:
+    model = write("robots/pincer_arm.urdf", MIMIC_URDF)
+    spec = model.with_name("pincer_arm.yaml")
+    assert _new(model, spec) == 0
+    fields = yaml.safe_load(spec.read_text())
+    assert fields["joint_groups"] == {"right": ["joint1"]}
+    assert fields["default_grippers"] == {"right": None}
+    assert "# guess: right_finger_joint follow another joint (URDF <mimic>): no motor" in spec.read_text()
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_robot(cls.__name__).get_model()
+    motors = [compiled.actuator(a).name for a in range(compiled.nu)]
+    assert motors == ["robot0_joint1", "robot0_left_finger_joint"]
+    assert compiled.actuator("robot0_joint1").ctrlrange.tolist() == [-40.0, 40.0]  # the URDF's effort

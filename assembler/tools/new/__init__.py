@@ -32,6 +32,9 @@ Kind = Literal["robot", "gripper"]
 HAND_WORDS = re.compile(r"hand|gripper", re.IGNORECASE)
 """Words in a file's model name, file name or folder that make it a gripper rather than an arm."""
 
+ARM_WITH_HAND = re.compile(r"with_?(hand|gripper)", re.IGNORECASE)
+"""Words that say the file is an arm carrying its hand (``xarm6_with_gripper.urdf``)."""
+
 __all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec"]
 
 
@@ -46,7 +49,7 @@ class NewSpec:
 
 def _kind(file: ModelFile) -> tuple[Kind, str]:
     words = " ".join([file.source.pristine.modelname, file.path.stem, file.path.parent.name])
-    found = HAND_WORDS.search(words)
+    found = None if ARM_WITH_HAND.search(words) else HAND_WORDS.search(words)
     if found:
         return "gripper", f"'{found.group(0)}' in the file's model name, file name or folder"
     return "robot", "no 'hand' or 'gripper' in the file's model name, file name or folder"

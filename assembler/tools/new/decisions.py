@@ -38,13 +38,25 @@ def _actuated_joints(model: mujoco.MjModel) -> dict[str, int]:
     return driven
 
 
+def driven_joints(model: mujoco.MjModel, joints: tuple[str, ...]) -> list[str]:
+    """The joints that need a motor of their own: all but those a joint equality makes follow another
+    (a URDF's ``<mimic>``; ``actuators:`` globs skip them too)."""
+    followers = {
+        mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.eq_obj1id[e]))
+        for e in range(model.neq)
+        if int(model.eq_type[e]) == int(mujoco.mjtEq.mjEQ_JOINT)
+    }
+    return [name for name in joints if name not in followers]
+
+
 def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     """Motors for a file without actuators: each joint's effort limit as the control range, a guessed
     one (twice gravity's load) where the file gives none."""
-    if file.model.nu:
+    driven = driven_joints(file.model, joints)
+    if file.model.nu or not driven:
         return None
     data = posed_data(file.model)
-    limits = {name: torque_limit(file.model, data, name) for name in joints}
+    limits = {name: torque_limit(file.model, data, name) for name in driven}
     declared: list[dict[str, Any]] = [{"match": "*", "type": "motor"}]
     guessed = [name for name, limit in limits.items() if not limit.from_file]
     declared += [
@@ -54,6 +66,10 @@ def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
         f"the {file.format.upper()} has no actuators: one motor per joint (robosuite's controllers write "
         "torques), each limited to the joint's effort limit in the file"
     )
+    if len(driven) < len(joints):
+        entry.guess(
+            f"{_short([n for n in joints if n not in driven])} follow another joint (URDF <mimic>): no motor"
+        )
     if guessed:
         entry.decide(
             f"no effort limit in the file for {_short(guessed)}: their ctrlrange is a guess, twice the "
@@ -195,7 +211,7 @@ def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     actuators = actuator_entry(file, tree.joints)
     entries += [actuators] if actuators else []
     names = (
-        list(tree.joints)
+        driven_joints(file.model, tree.joints)
         if actuators
         else [
             mujoco.mj_id2name(file.model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in range(file.model.nu)
