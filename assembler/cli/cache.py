@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from assembler.cache import cache_disabled, clear, default_store
+from assembler.build.service import clear, default_store
+from assembler.cache import cache_disabled
 from assembler.cache.meshes import default_mesh_store
 from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.cli.common import table

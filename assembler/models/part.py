@@ -16,13 +16,13 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.build.compile import compile_home
 from assembler.cache.inputs import JointEdit, PartInputs
-from assembler.cache.mesh_swap import compile_from_store
 from assembler.errors import AssemblerWarning, Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.files.paths import display_path, locate_model_file
 from assembler.mjcf import census, compose
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.mjcf.joints import set_joint_attribute_value
-from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.joint_rules import JointTable
@@ -40,9 +40,6 @@ FloatArray = NDArray[np.float64]
 
 _WARNED: dict[Any, Any] = {}
 """The warnings already shown (Python's registry for warn_explicit), so each is shown once."""
-
-COLLISION_GROUP = 0
-VISUAL_GROUP = 1
 
 
 class PartModel(metaclass=RegisteringMeta):
@@ -220,7 +217,7 @@ class PartModel(metaclass=RegisteringMeta):
         self.complete_alone(assembly)
         what = f"building {self.family} '{type(self).__name__}' alone"
         census.require_at_least(census.of_spec(assembly), census.of_spec(self.prepared_mjspec), what)
-        return compile_with_home(assembly, self.home_qpos(), self.describe(), compile_from_store)
+        return compile_home(assembly, self.home_qpos(), self.describe())
 
     def complete_alone(self, assembly: mujoco.MjSpec) -> None:
         """What a part needs around it to compile on its own; nothing for most parts."""

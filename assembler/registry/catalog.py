@@ -24,9 +24,9 @@ from assembler.models import (
     PartModel,
     source_of,
 )
+from assembler.registry.arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
-    SPEC_SUFFIXES,
     LoadedSpec,
     LocatedDocument,
     Override,
@@ -84,7 +84,7 @@ def class_from_spec(loaded: LoadedSpec[Any], register: bool = True) -> type[Part
         "spec": spec,
         "loaded": loaded,
         "__doc__": spec.description or f"{kind_of(spec).title()} '{spec.name}' from {loaded.source}.",
-        "__module__": "assembler.specs",
+        "__module__": __name__,  # a module that exists: the one that made the class
     }
     return type(spec.name, (parent_class(spec),), namespace)
 
@@ -191,7 +191,7 @@ def classes_named(references: Sequence[str]) -> list[type[PartModel]]:
     """The parts ``references`` name: spec files and folders (registered together, with the specs
     beside each file, so they may extend and name each other), then registered robot, base or
     gripper names."""
-    paths = [r for r in references if r.endswith(SPEC_SUFFIXES) or Path(r).exists()]
+    paths = [r for r in references if argument_kind(r) is not ArgumentKind.NAME]
     classes = register_with_siblings(paths) if paths else []
     for name in (r for r in references if r not in paths):
         for table in REGISTRIES.values():

@@ -1,7 +1,11 @@
-"""Mesh files MuJoCo cannot read (COLLADA ``.dae`` and other formats), converted to OBJ once.
+"""Mesh files MuJoCo cannot read (COLLADA ``.dae``), converted to OBJ once; the formats allowed at all.
 
 MuJoCo reads STL, OBJ and MSH meshes. Vendors' URDFs often give their visual meshes as COLLADA;
-MuJoCo refuses those outright. We convert such a file with trimesh (COLLADA through pycollada):
+MuJoCo refuses those outright. Mesh formats are an allow-list: these four, nothing else (trimesh
+would open dozens more, and decompress ``.zip``, ``.bz2`` or ``.tar.*`` archives without a bound).
+A COLLADA file is read through one bounded read (:data:`assembler.files.limits.MAX_DAE_BYTES`),
+refused if it is an archive or declares a DTD, and handed to trimesh as bytes, so trimesh opens
+no file itself (no texture, nothing a crafted file names). The conversion (COLLADA through pycollada):
 its scene graph's transforms are applied and its unit (``<unit meter>``) is turned into metres, as
 ROS tools show it. The OBJ is written once into ``<cache folder>/converted-meshes/``, named by the
 source file's content digest, so an edited source gives a new file and concurrent processes
@@ -17,6 +21,7 @@ from __future__ import annotations
 
 import hashlib
 import importlib.util
+import io
 import os
 import shutil
 import sys
@@ -25,11 +30,37 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from assembler.cache.settings import cache_dir
+import numpy as np
+
+from assembler.cache.settings import DIR_VARIABLE, cache_dir
+from assembler.errors import MjcfError
 from assembler.files.extras import install_command
+from assembler.files.limits import MAX_DAE_BYTES
+from assembler.files.paths import confine, display_path
+from assembler.files.plain_xml import check_plain_xml
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
 """Mesh formats MuJoCo reads itself."""
+
+CONVERTED_SUFFIXES: frozenset[str] = frozenset({".dae"})
+"""Mesh formats converted to OBJ with trimesh (COLLADA through pycollada)."""
+
+ALLOWED_FORMATS = "STL, OBJ, MSH (read by MuJoCo) or DAE (COLLADA, converted to OBJ)"
+
+ARCHIVE_SUFFIXES: frozenset[str] = frozenset(
+    {".zip", ".zae", ".gz", ".tgz", ".bz2", ".tbz2", ".xz", ".txz", ".lzma", ".zst", ".7z", ".rar", ".tar"}
+)
+"""Archives trimesh would open (and decompress) if given one; named as such in the refusal."""
+
+ARCHIVE_MAGIC: tuple[bytes, ...] = (
+    b"PK\x03\x04",
+    b"\x1f\x8b",
+    b"BZh",
+    b"\xfd7zXZ\x00",
+    b"7z\xbc\xaf",
+    b"\x28\xb5\x2f\xfd",
+)
+"""The first bytes of zip, gzip, bzip2, xz, 7z and zstd files: a ``.dae`` that starts so is an archive."""
 
 
 def _install_converter() -> str:
@@ -48,6 +79,24 @@ def converted_dir() -> Path:
     return cache_dir() / "converted-meshes"
 
 
+def check_mesh_format(path: Path, shown: str) -> None:
+    """Refuse a mesh whose suffix is not an allowed format (one line naming ``shown`` and the formats);
+    looked at before the file is, so the answer says nothing about whether it exists."""
+    suffixes = [suffix.lower() for suffix in path.suffixes]
+    suffix = path.suffix.lower()
+    if suffix in READABLE_SUFFIXES or suffix in CONVERTED_SUFFIXES:
+        return
+    archive = next((i for i, s in enumerate(suffixes) if s in ARCHIVE_SUFFIXES), None)
+    what = (
+        f"an archive ({''.join(suffixes[archive:])})"
+        if archive is not None
+        else f"'{suffix}'"
+        if suffix
+        else "a file without a suffix"
+    )
+    raise MeshConversionError(f"{shown}: {what} is not a mesh format read here; a mesh is {ALLOWED_FORMATS}")
+
+
 def needs_conversion(path: Path) -> bool:
     """True for a mesh file whose format MuJoCo does not read."""
     return path.suffix.lower() not in READABLE_SUFFIXES
@@ -59,6 +108,27 @@ def _digest(path: Path) -> str:
         while chunk := stream.read(_CHUNK):
             digest.update(chunk)
     return digest.hexdigest()
+
+
+def _read_dae(source: Path) -> bytes:
+    """The COLLADA file's bytes, read once and bounded; an archive or a DTD is refused."""
+    try:
+        with source.open("rb") as stream:
+            data = stream.read(MAX_DAE_BYTES + 1)
+    except OSError as error:
+        raise MeshConversionError(
+            f"{display_path(source)}: cannot read it ({error.strerror or error})"
+        ) from None
+    if len(data) > MAX_DAE_BYTES:
+        raise MeshConversionError(
+            f"{display_path(source)}: the file's size exceeds the limit of {MAX_DAE_BYTES} bytes for a mesh"
+        )
+    if data.startswith(ARCHIVE_MAGIC):
+        raise MeshConversionError(
+            f"{display_path(source)}: an archive, not a COLLADA file; a mesh is {ALLOWED_FORMATS}"
+        )
+    check_plain_xml(data, display_path(source), MeshConversionError)
+    return data
 
 
 def importable(module: str) -> bool:
@@ -73,43 +143,70 @@ def converter_available() -> bool:
     return importable("trimesh")
 
 
-def _digest_name(source: Path, suffix: str) -> Path:
-    return converted_dir() / f"{source.stem}-{_digest(source)}{suffix}"
+def _digest_name(source: Path, suffix: str, digest: str) -> Path:
+    return converted_dir() / f"{source.stem}-{digest}{suffix}"
 
 
 def _write_atomically(target: Path, write: Callable[[str], object]) -> None:
     """``write(temporary path)``, then the file appears whole under ``target`` (another process sees
     all of it or nothing)."""
-    target.parent.mkdir(parents=True, exist_ok=True)
-    descriptor, temporary = tempfile.mkstemp(dir=target.parent, suffix=target.suffix + ".tmp")
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        descriptor, temporary = tempfile.mkstemp(dir=target.parent, suffix=target.suffix + ".tmp")
+    except OSError as error:
+        raise MeshConversionError(
+            f"cannot write the converted mesh to {target.parent} ({error.strerror or error}); make the "
+            f"cache folder writable or point {DIR_VARIABLE} at one that is"
+        ) from None
     os.close(descriptor)
     try:
         write(temporary)
         os.replace(temporary, target)
+    except OSError as error:
+        raise MeshConversionError(
+            f"cannot write the converted mesh {target} ({error.strerror or error})"
+        ) from None
     finally:
         Path(temporary).unlink(missing_ok=True)
 
 
+def _confined(made: Path) -> Path:
+    """A file made in the conversions' folder, through the one door every file read passes (a link
+    placed there leading out is refused like any other)."""
+    return confine(made, [converted_dir()], "converted mesh ", MjcfError)
+
+
 def renamed_copy(source: Path) -> Path:
     """A copy of ``source`` under a name no other mesh has (made once per content)."""
-    target = _digest_name(source, source.suffix)
+    target = _digest_name(source, source.suffix, _digest(source))
     if not target.is_file():
         _write_atomically(target, lambda temporary: shutil.copyfile(source, temporary))
-    return target
+    return _confined(target)
 
 
-def _convert(source: Path, target: Path) -> None:
+def _convert(source: Path, data: bytes, target: Path) -> None:
     import trimesh  # the optional extra: imported only when a mesh needs it
 
-    try:
-        scene: Any = trimesh.load(str(source), force="scene")  # a trimesh.Scene
+    try:  # bytes, not a path: trimesh then has no folder to resolve a texture or another file in
+        scene: Any = trimesh.load(io.BytesIO(data), file_type="dae", force="scene")  # a trimesh.Scene
     except Exception as error:  # trimesh raises many kinds; each means "this file cannot be read"
-        raise MeshConversionError(f"{source}: trimesh cannot read it ({error})") from None
-    if scene.units not in (None, "m", "meter", "meters"):
-        scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
+        raise MeshConversionError(f"{display_path(source)}: trimesh cannot read it ({error})") from None
     if not scene.geometry:
-        raise MeshConversionError(f"{source}: the file holds no triangles; give the link another mesh")
-    mesh = scene.to_mesh()
+        raise MeshConversionError(
+            f"{display_path(source)}: the file holds no triangles; give the link another mesh"
+        )
+    try:
+        with np.errstate(all="ignore"):  # a NaN unit or transform: refused below, not warned about
+            if scene.units not in (None, "m", "meter", "meters"):
+                scene = scene.convert_units("meters")  # COLLADA <unit meter="0.001"> and the like
+            mesh = scene.to_mesh()
+    except Exception as error:  # numpy's and trimesh's errors on a unit of 0, a singular transform, ...
+        raise MeshConversionError(f"{display_path(source)}: trimesh cannot convert it ({error})") from None
+    if not np.isfinite(mesh.vertices).all():
+        raise MeshConversionError(
+            f"{display_path(source)}: its coordinates are not finite numbers once in metres (a NaN or "
+            "infinite <unit>, transform or vertex); fix the file"
+        )
     # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
     _write_atomically(
         target,
@@ -121,20 +218,23 @@ def _convert(source: Path, target: Path) -> None:
 
 def readable_mesh(source: Path) -> Path:
     """``source`` if MuJoCo reads it, else its OBJ conversion (made now if not made before)."""
+    shown = display_path(source)
+    check_mesh_format(source, shown)  # the file the name resolved to: a link may change the suffix
     if not needs_conversion(source):
         return source
     if source.suffix.lower() == ".dae" and not importable("collada"):
         missing = "trimesh and pycollada" if not converter_available() else "pycollada"
         raise MeshConversionError(
-            f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and {missing} "
+            f"{shown}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and {missing} "
             f"to convert it are not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     if not converter_available():
         raise MeshConversionError(
-            f"{source}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
+            f"{shown}: MuJoCo cannot read {source.suffix} meshes (only STL, OBJ, MSH) and trimesh to "
             f"convert it is not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
-    target = _digest_name(source, ".obj")
+    data = _read_dae(source)
+    target = _digest_name(source, ".obj", hashlib.blake2b(data, digest_size=16).hexdigest())
     if not target.is_file():
-        _convert(source, target)
-    return target
+        _convert(source, data, target)
+    return _confined(target)

@@ -25,11 +25,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError, Problem
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.urdf.document import Mimic, UrdfDocument
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
-VISUAL_GROUP = 1
-COLLISION_GROUP = 0
 
 
 def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.MjsEquality | None:
@@ -43,9 +42,17 @@ def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.M
 
 
 def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None:
-    """One joint equality per ``<mimic>``; a mimic of a joint that cannot move is an error."""
+    """One joint equality per ``<mimic>``; a mimic of itself or of a joint that cannot move is an error."""
     problems = []
     for mimic in mimics:
+        if mimic.leader == mimic.follower:  # MuJoCo's import drops it without a word
+            problems.append(
+                Problem(
+                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics itself; name another joint in "
+                    "its <mimic joint>, or remove the <mimic>"
+                )
+            )
+            continue
         joints = {name: spec.joint(name) for name in (mimic.follower, mimic.leader)}
         still = [name for name, joint in joints.items() if joint is None or joint.type not in MOVING]
         if still:

@@ -39,8 +39,9 @@ class PartSpec(StrictModel):
 
     urdf: str | None = Field(default=None, min_length=1)
     """The URDF file, imported by MuJoCo: relative to this spec file, absolute, or 'package://<package>/<path>'
-    (an installed Python package of that name, else a ROS package: ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or
-    the share/ folders of the Python environment, where example-robot-data installs)."""
+    (an installed Python package of that name, else a ROS package: one the spec repository declares in
+    packages, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or the share/ folders of the Python environment, where
+    example-robot-data installs)."""
 
     balance_inertia: bool = False
     """URDF only: make link inertias that violate A + B >= C (a common export error MuJoCo refuses)
