@@ -92,6 +92,11 @@ REFUSALS: dict[tuple[str, str], tuple[str, dict[str, str], str]] = {
     ),
     ("controllers.py", "needs 'type' and 'body_parts'"): ("RA708", _controller("{parts: 1}"), "needs 'type'"),
     ("controllers.py", "cannot read"): ("RA708", _controller("missing.json"), "cannot read"),
+    ("controllers.py", "CONTROLLER, str(error)"): (
+        "RA708",
+        _controller("../outside.json", **{"../outside.json": "{}"}),
+        "outside the folders",
+    ),
     ("controllers.py", "is not a controller configuration"): (
         "RA708",
         _controller("bad.json", **{"bad.json": "[1]"}),
