@@ -165,6 +165,8 @@ def test_each_refusal_is_a_lint_error_on_the_spec_the_bridge_refuses(
     capsys: pytest.CaptureFixture[str], write: Write, refusal: tuple[str, str]
 ) -> None:
     code, files, refused = REFUSALS[refusal]
+    if code == "RA708":  # robosuite's configurations are robosuite's files: without it lint says so (info)
+        pytest.importorskip("robosuite")
     paths = [write(name, text) for name, text in files.items()]
     status, findings = lint_json(capsys, str(paths[-1]))
     fired = [f for f in findings if f["code"] == code]
