@@ -106,6 +106,10 @@ DEFERRED = {
         "assembler.robosuite",
         "assembler.robosuite.bridge",
     ): "the bridge imports robosuite, when robosuite loads",
+    (
+        "assembler.tools.lint.robosuite_bridge",
+        "assembler.robosuite.controllers",
+    ): "lint reads robosuite's controller configurations (importing robosuite) only for a spec naming one",
 }
 """The imports made late on purpose, each with why; any other import must be at the module's top."""
 

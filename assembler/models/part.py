@@ -25,6 +25,7 @@ from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
+from assembler.models.collision_colour import collision_colour_note, colour_collision_geoms
 from assembler.models.joint_rules import JointTable
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
@@ -167,21 +168,13 @@ class PartModel(metaclass=RegisteringMeta):
             for attribute, joint_value in values.items():
                 set_joint_attribute_value(joint, attribute, joint_value.value)
         if self.spec.collision_colour == "robosuite":
-            for geom in mjspec.geoms:
-                if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
-                    geom.rgba = self.collision_rgba
-                    geom.material = ""
+            colour_collision_geoms(mjspec, self.collision_rgba)
         return mjspec
 
     def conventions_applied(self) -> list[str]:
         """What the part's build changes in its file's look by a convention the spec asks for."""
-        if self.spec.collision_colour != "robosuite":
-            return []
-        colour = " ".join(f"{value:g}" for value in self.collision_rgba)
-        return [
-            f"collision geoms (group 0) lose their materials and are coloured {colour} "
-            "(collision_colour: robosuite)"
-        ]
+        robosuite = self.spec.collision_colour == "robosuite"
+        return [collision_colour_note(self.collision_rgba)] if robosuite else []
 
     def part_inputs(self) -> PartInputs:
         """What this part contributes to an assembly's cache key (no MJCF is read)."""

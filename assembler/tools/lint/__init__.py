@@ -17,11 +17,15 @@ RA502  warning   gripper with fingers but no left/right_fingerpad geoms declared
 RA503  warning   important geom that cannot collide
 RA504  warning   part with no visual geoms (invisible to robosuite's cameras)
 RA601  error     home keyframe outside a joint's range
-RA701  warning   position servos robosuite's controllers would drive, robosuite.actuation unset
-       error     (or robosuite.actuation torque and a servo without forcerange)
+RA701  error     position servos robosuite's controllers would drive, robosuite.actuation unset
+                 (warning with robosuite.enabled false), or actuation torque and a servo without forcerange
 RA702  info      gripper without robosuite's eef body / grip sites (robosuite gets them at eef_body)
-RA703  warning   gripper with actuators but no actions: (robosuite refuses it)
-RA704  warning   arm without the {arm}_center site robosuite's composite controller reads
+RA703  error     gripper with actuators but no actions: (robosuite refuses it)
+RA704  info      arm without the {arm}_center site robosuite's composite controller reads
+RA705  error     joint of a group robosuite's controllers drive without an actuator
+RA706  error     base_xpos_offset of an arena other than table with variables
+RA707  error     a part's file reads euler angles in another sequence than xyz
+RA708  error     robosuite.controller that the bridge cannot build (info: robosuite absent)
 =====  ========  ===================================================================
 
 Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
@@ -46,6 +50,12 @@ from assembler.tools.lint.important_names import (
 from assembler.tools.lint.keyframe import keyframe_outside_limits
 from assembler.tools.lint.mass import degenerate_inertia, implausible_density, oversized_inertia
 from assembler.tools.lint.penetration import self_penetration
+from assembler.tools.lint.robosuite_bridge import (
+    foreign_euler_sequences,
+    undriven_controlled_joints,
+    unreadable_base_offsets,
+    unusable_controllers,
+)
 from assembler.tools.lint.robosuite_grippers import grip_frames_added_for_robosuite, gripper_without_actions
 from assembler.tools.lint.robosuite_robots import missing_arm_centers, servos_robosuite_cannot_drive
 from assembler.tools.lint.target import LintTarget, part_target, robot_target
@@ -71,6 +81,10 @@ CHECKS: tuple[Check, ...] = (
     grip_frames_added_for_robosuite,
     gripper_without_actions,
     missing_arm_centers,
+    undriven_controlled_joints,
+    unreadable_base_offsets,
+    foreign_euler_sequences,
+    unusable_controllers,
 )
 """Every check, in the order of their codes."""
 
