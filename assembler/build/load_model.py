@@ -20,7 +20,6 @@ from assembler.build.repeat import answered_model, keyed
 from assembler.registry.arguments import DEFAULT, spec_file_path
 
 
-
 def _plain(overrides: Any) -> Any:
     """Overrides as plain data for the request (a mapping or a list of ``PATH=VALUE`` strings);
     anything else is kept as it is, which makes the request unrecordable, never wrong."""
@@ -48,15 +47,17 @@ def load_model(
     was made from is unchanged; ``cache=False`` compiles (and records nothing).
     """
     spec_file = spec_file_path(robot)
-    request = keyed({
-        "kind": "load_model",
-        "robot": str(spec_file) if spec_file is not None else robot,
-        "idn": idn,
-        "base": base,
-        "grippers": dict(grippers) if grippers is not None else None,
-        "overrides": _plain(overrides),
-        "specs": [str(Path(folder).resolve()) for folder in specs],
-    })
+    request = keyed(
+        {
+            "kind": "load_model",
+            "robot": str(spec_file) if spec_file is not None else robot,
+            "idn": idn,
+            "base": base,
+            "grippers": dict(grippers) if grippers is not None else None,
+            "overrides": _plain(overrides),
+            "specs": [str(Path(folder).resolve()) for folder in specs],
+        }
+    )
     if cache:
         model = answered_model(request)
         if model is not None:

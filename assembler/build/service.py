@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.build.compile import compile_and_emit, compile_home
+from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
