@@ -20,6 +20,7 @@ import numpy as np
 
 from assembler.errors import AssemblerError
 from assembler.mjcf.keyframe import home_control
+from assembler.build.patch_inputs import Resolved
 from assembler.models import RobotModel
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
@@ -136,9 +137,9 @@ class ModelPatch:
         return sorted({name for name, _, _ in self.entries})
 
 
-def _structure_problem(base: RobotModel, variant: RobotModel) -> str | None:
+def _structure_problem(base: Resolved, variant: Resolved) -> str | None:
     """The first top-level spec field outside :data:`PATCHED_SECTIONS` that differs, if any."""
-    ours, theirs = base.spec.model_dump(), variant.spec.model_dump()
+    ours, theirs = base.dump, variant.dump
     for key in ours:
         if key not in PATCHED_SECTIONS and ours[key] != theirs[key]:
             return key
@@ -147,9 +148,9 @@ def _structure_problem(base: RobotModel, variant: RobotModel) -> str | None:
     return None
 
 
-def _joint_entries(patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> None:
+def _joint_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, variant: Resolved) -> None:
     for name in variant.joint_names:
-        joint = model.joint(variant.naming_prefix + name)
+        joint = model.joint(variant.prefix + name)
         ndof = {0: 6, 1: 3}.get(int(joint.type[0]), 1)
         for attribute, target in JOINT_FIELDS.items():
             old, new = base.joint_values[name].get(attribute), variant.joint_values[name].get(attribute)
@@ -163,11 +164,16 @@ def _joint_entries(patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, v
                     patch.set(target, dof, value)
 
 
-def _actuator_entries(
-    patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, variant: RobotModel
-) -> None:
-    ours = {a.name: a for a in base.prepared_mjspec.actuators}
-    theirs = {a.name: a for a in variant.prepared_mjspec.actuators}
+def _actuator_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, variant: Resolved) -> None:
+    if variant.actuators is base.actuators:  # resolved against the robot's own MJCF: only dampratios
+        for actuator in variant.actuators:
+            if actuator.biasprm[2] > 0:
+                row = model.actuator(variant.prefix + actuator.name).id
+                patch.dampratio[row] = float(actuator.biasprm[2])
+                patch.set("actuator_biasprm", row, model.actuator_biasprm[row].copy())
+        return
+    ours = {a.name: a for a in base.actuators}
+    theirs = {a.name: a for a in variant.actuators}
     if list(ours) != list(theirs):
         raise NotPatchable("actuators: the variant has other actuators (a count or names); compile it")
     for name, new in theirs.items():
@@ -175,7 +181,7 @@ def _actuator_entries(
         for attribute in ACTUATOR_STRUCTURE:
             if not np.array_equal(np.asarray(getattr(old, attribute)), np.asarray(getattr(new, attribute))):
                 raise NotPatchable(f"actuators: '{name}' changes its {attribute}, which is structural")
-        row = model.actuator(variant.naming_prefix + name).id
+        row = model.actuator(variant.prefix + name).id
         for attribute, target in ACTUATOR_VALUES:
             value = np.asarray(getattr(new, attribute), dtype=float)
             if attribute.endswith("range") and not np.array_equal(value, getattr(old, attribute)):
@@ -193,8 +199,8 @@ def _owned(model: mujoco.MjModel, kind: mujoco.mjtObj, index: int, prefix: str) 
     return name == "" or name.startswith(prefix)
 
 
-def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> None:
-    prefix = variant.naming_prefix
+def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, variant: Resolved) -> None:
+    prefix = variant.prefix
     for name in {*base.physical.bodies, *variant.physical.bodies}:
         (s0, m0, i0), (s1, m1, i1) = base.physical.factors(name), variant.physical.factors(name)
         if (s0, m0, i0) == (s1, m1, i1):
@@ -226,19 +232,19 @@ def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, va
             patch.set("geom_friction", model.geom(prefix + name).id, np.asarray(new.value, dtype=float))
 
 
-def _home_entries(patch: ModelPatch, model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> None:
+def _home_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, variant: Resolved) -> None:
     if base.spec.init_qpos == variant.spec.init_qpos:
         return
     home = model.key("home").id
     qpos = model.key_qpos[home].copy()
-    for index, joint in enumerate(variant.joints):
-        address = model.jnt_qposadr[model.joint(joint).id]
+    for index, joint in enumerate(variant.joint_names):
+        address = model.jnt_qposadr[model.joint(variant.prefix + joint).id]
         given = variant.spec.init_qpos
         qpos[address] = given[index] if given is not None else model.qpos0[address]
     patch.set("key_qpos", home, qpos)
 
 
-def model_patch(model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> ModelPatch:
+def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved) -> ModelPatch:
     """What turns ``model`` (the compiled ``base``) into the compiled ``variant``; :class:`NotPatchable`
     names the first change that needs a compile."""
     different = _structure_problem(base, variant)
@@ -288,7 +294,7 @@ def apply_patch(model: mujoco.MjModel, patch: ModelPatch) -> None:
 
 def patched_model(model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> mujoco.MjModel:
     """A copy of ``model`` (the compiled ``base``) patched into the compiled ``variant``."""
-    patch = model_patch(model, base, variant)
+    patch = model_patch(model, Resolved.of(base), Resolved.of(variant))
     patched = copy.copy(model)  # MuJoCo's mj_copyModel: its own arrays
     apply_patch(patched, patch)
     return patched

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -11,7 +12,9 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.build.patchable import PATCHABLE, NotPatchable, model_patch, patched_model
+from assembler.build.patch_inputs import Resolved, resolve_variant
+from assembler.build.patchable import PATCHABLE, NotPatchable, apply_patch, model_patch, patched_model
+from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
 
 Write = Callable[[str, str], Path]
@@ -72,13 +75,17 @@ def _register_declared(write: Write) -> None:
     assembler.register_specs(write("d/declared.yaml", DECLARED))
 
 
-def _both_ways(robot: str, overrides: dict[str, Any]) -> tuple[mujoco.MjModel, mujoco.MjModel, list[str]]:
+def _both_ways(robot: str, overrides: dict[str, Any]) -> tuple[list[mujoco.MjModel], mujoco.MjModel, list[str]]:
+    """The variant patched (its tables resolved in full, and against the robot's MJCF), and compiled."""
     base = assembler.assemble(robot)
     model = base.get_model(cache=False, store=False)
     variant = assembler.assemble(robot, overrides=overrides)
     compiled = variant.get_model(cache=False, store=False)
-    fields = model_patch(model, base, variant).fields
-    return patched_model(model, base, variant), compiled, fields
+    light = resolve_variant(base, Resolved.of(base), parse_overrides(overrides))
+    patch = model_patch(model, Resolved.of(base), light)
+    lightly = copy.copy(model)
+    apply_patch(lightly, patch)
+    return [patched_model(model, base, variant), lightly], compiled, patch.fields
 
 
 @pytest.mark.parametrize(("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)])
@@ -86,17 +93,19 @@ def test_a_patched_variant_equals_its_full_compile_in_every_model_field(
     write: Write, robot: str, overrides: dict[str, Any]
 ) -> None:
     _register_declared(write)
-    patched, compiled, fields = _both_ways(robot, overrides)
+    both, compiled, fields = _both_ways(robot, overrides)
     assert fields, "the variant changed nothing"
-    ours, theirs = _model_arrays(patched), _model_arrays(compiled)
-    assert ours.keys() == theirs.keys()
-    different = [
-        name
-        for name in theirs
-        if ours[name].shape != theirs[name].shape
-        or not np.allclose(ours[name], theirs[name], rtol=1e-10, atol=1e-10, equal_nan=True)
-    ]
-    assert different == [], {name: (ours[name], theirs[name]) for name in different[:3]}
+    theirs = _model_arrays(compiled)
+    for patched in both:
+        ours = _model_arrays(patched)
+        assert ours.keys() == theirs.keys()
+        different = [
+            name
+            for name in theirs
+            if ours[name].shape != theirs[name].shape
+            or not np.allclose(ours[name], theirs[name], rtol=1e-10, atol=1e-10, equal_nan=True)
+        ]
+        assert different == [], {name: (ours[name], theirs[name]) for name in different[:3]}
 
 
 def test_the_cases_write_every_model_field_the_table_names(write: Write) -> None:
@@ -118,4 +127,4 @@ def test_a_structural_change_is_refused_with_the_field_it_changes(overrides: dic
     base = assembler.assemble("Panda")
     model = base.get_model(cache=False, store=False)
     with pytest.raises(NotPatchable, match=message):
-        model_patch(model, base, assembler.assemble("Panda", overrides=overrides))
+        model_patch(model, Resolved.of(base), Resolved.of(assembler.assemble("Panda", overrides=overrides)))

@@ -1,0 +1,89 @@
+"""What a patch compares: a robot's spec and its resolved joint, actuator and ``bodies:``/``geoms:`` tables.
+
+:meth:`Resolved.of` reads them from a built robot. :func:`resolve_variant` resolves a variant's
+spec against the robot it varies without preparing the variant's MJCF again (the tables are
+functions of the spec and the file, which the two share): a thousand variants cost a thousand
+spec validations, not a thousand MJCF preparations. A variant that changes anything else is
+prepared in full, and the patch then says whether it is structural.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import mujoco
+
+from assembler.errors import SpecError
+from assembler.models import RobotModel
+from assembler.models.joint_rules import JointTable
+from assembler.models.physical import PhysicalTable, resolve_physical
+from assembler.models.preparation import init_qpos_problems, joint_table
+from assembler.registry.catalog import with_overrides
+from assembler.registry.instances import DEFAULT, assemble
+from assembler.spec.documents import Override, blame
+from assembler.spec.schema import RobotSpec
+
+LIGHT_SECTIONS = frozenset({"joint_defaults", "joints", "bodies", "geoms", "init_qpos"})
+"""Spec fields a variant may change and still be resolved against the robot's prepared MJCF."""
+
+
+@dataclass(frozen=True)
+class Resolved:
+    """A robot's spec and its tables, unprefixed, as :func:`~assembler.build.patchable.model_patch` reads them."""
+
+    spec: RobotSpec
+    prefix: str
+    joint_names: list[str]
+    joint_values: JointTable
+    physical: PhysicalTable
+    actuators: Sequence[mujoco.MjsActuator]
+    """The robot part's actuators as its prepared MJCF has them (uncompiled: a dampratio is positive);
+    a variant resolved against its robot shares the robot's list."""
+
+    dump: dict[str, Any]
+    """``spec.model_dump()``, made once: patches compare the fields they cannot patch."""
+
+    @classmethod
+    def of(cls, robot: RobotModel) -> Resolved:
+        """The tables of a built robot (its MJCF prepared if it was not)."""
+        return cls(
+            robot.spec,
+            robot.naming_prefix,
+            robot.joint_names,
+            robot.joint_values,
+            robot.physical,
+            list(robot.prepared_mjspec.actuators),
+            robot.spec.model_dump(),
+        )
+
+
+def resolve_variant(
+    base: RobotModel,
+    resolved: Resolved,
+    overrides: Sequence[Override],
+    grippers: Mapping[str, str | None] | None = None,
+    base_name: str | None = DEFAULT,
+) -> Resolved:
+    """The tables of ``base``'s robot (``resolved`` are its own) with ``overrides`` (which may not be
+    valid: a :class:`SpecError` names the override), resolved against ``base``'s prepared MJCF when
+    only light sections change."""
+    variant = with_overrides(type(base), overrides)
+    spec: RobotSpec = variant.spec
+    ours, theirs = resolved.dump, spec.model_dump()
+    if any(ours[key] != theirs[key] for key in ours if key not in LIGHT_SECTIONS):
+        robot = assemble(type(base).__name__, base.idn, base_name, grippers, overrides)
+        return Resolved.of(robot)
+    prepared = base.prepared()
+    problems = init_qpos_problems(spec, prepared.joint_names, variant.spec_problem)
+    try:
+        joints = joint_table(spec, prepared.source, prepared.joint_names, variant.spec_problem)
+    except SpecError as error:
+        problems += error.problems
+        joints = {}
+    physical, physical_problems = resolve_physical(prepared.mjspec, spec.bodies, spec.geoms, variant.spec_problem)
+    problems += physical_problems
+    if problems:
+        raise SpecError([blame(p, overrides, note=False) for p in problems])
+    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, resolved.actuators, theirs)
