@@ -9,11 +9,13 @@ prepared in full, and the patch then says whether it is structural.
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import mujoco
+from pydantic import ValidationError
 
 from assembler.errors import SpecError
 from assembler.models import RobotModel
@@ -45,6 +47,10 @@ class Resolved:
     dump: dict[str, Any]
     """``spec.model_dump()``, made once: patches compare the fields they cannot patch."""
 
+    owner: mujoco.MjSpec
+    """The prepared spec holding ``actuators``: kept alive with them (MuJoCo 3.9's bindings free the
+    elements of a spec nothing refers to)."""
+
     @classmethod
     def of(cls, robot: RobotModel) -> Resolved:
         """The tables of a built robot (its MJCF prepared if it was not)."""
@@ -56,7 +62,26 @@ class Resolved:
             robot.physical,
             list(robot.prepared_mjspec.actuators),
             robot.spec.model_dump(),
+            robot.prepared_mjspec,
         )
+
+
+def _quick_spec(resolved: Resolved, overrides: Sequence[Override]) -> RobotSpec | None:
+    """The robot's spec with ``overrides`` put into its dump and validated again, or None when that
+    fails; cheaper than the document path (positions, inheritance), which reports the failure."""
+    data = copy.deepcopy(resolved.dump)
+    for override in overrides:
+        container: Any = data
+        try:
+            for part in override.path[:-1]:
+                container = container[part]
+            container[override.path[-1]] = copy.deepcopy(override.value)
+        except (KeyError, IndexError, TypeError):
+            return None
+    try:
+        return type(resolved.spec).model_validate(data)
+    except ValidationError:
+        return None
 
 
 def resolve_variant(
@@ -69,21 +94,23 @@ def resolve_variant(
     """The tables of ``base``'s robot (``resolved`` are its own) with ``overrides`` (which may not be
     valid: a :class:`SpecError` names the override), resolved against ``base``'s prepared MJCF when
     only light sections change."""
-    variant = with_overrides(type(base), overrides)
-    spec: RobotSpec = variant.spec
+    spec = _quick_spec(resolved, overrides)
+    if spec is None:  # a value the schema refuses, or a path the dump lacks: the full path says why
+        spec = with_overrides(type(base), overrides).spec
     ours, theirs = resolved.dump, spec.model_dump()
     if any(ours[key] != theirs[key] for key in ours if key not in LIGHT_SECTIONS):
         robot = assemble(type(base).__name__, base.idn, base_name, grippers, overrides)
         return Resolved.of(robot)
     prepared = base.prepared()
-    problems = init_qpos_problems(spec, prepared.joint_names, variant.spec_problem)
+    problems = init_qpos_problems(spec, prepared.joint_names, type(base).spec_problem)
     try:
-        joints = joint_table(spec, prepared.source, prepared.joint_names, variant.spec_problem)
+        joints = joint_table(spec, prepared.source, prepared.joint_names, type(base).spec_problem)
     except SpecError as error:
         problems += error.problems
         joints = {}
-    physical, physical_problems = resolve_physical(prepared.mjspec, spec.bodies, spec.geoms, variant.spec_problem)
+    physical, physical_problems = resolve_physical(prepared.mjspec, spec.bodies, spec.geoms, type(base).spec_problem)
     problems += physical_problems
     if problems:
         raise SpecError([blame(p, overrides, note=False) for p in problems])
-    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, resolved.actuators, theirs)
+    actuators = resolved.actuators
+    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, resolved.owner)

@@ -17,6 +17,7 @@ from typing import Any
 
 import mujoco
 import numpy as np
+from numpy.typing import NDArray
 
 from assembler.errors import AssemblerError
 from assembler.mjcf.keyframe import home_control
@@ -46,6 +47,7 @@ PATCHABLE: dict[str, tuple[str, ...]] = {
         "jnt_pos",
         "cam_pos",
         "light_pos",
+        "bvh_aabb",
     ),
     "geoms[i].friction": ("geom_friction",),
     "init_qpos": ("key_qpos",),
@@ -126,6 +128,9 @@ class ModelPatch:
     entries: list[tuple[str, int, Any]] = field(default_factory=list)
     dampratio: dict[int, float] = field(default_factory=dict)
     """Actuator -> damping ratio: its ``biasprm[2]`` is recomputed after ``mj_setConst``."""
+
+    dampratio_rule: str = "inverse"
+    """How this MuJoCo's compiler resolves a dampratio (see :func:`dampratio_rule`)."""
 
     def set(self, name: str, row: int, value: Any) -> None:
         """Write ``value`` into row ``row`` of the model field ``name``."""
@@ -212,6 +217,9 @@ def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
         if size == 1.0:
             continue
         patch.set("body_ipos", body, model.body_ipos[body] * size)
+        first = model.body_bvhadr[body]
+        for node in range(first, first + model.body_bvhnum[body]) if first >= 0 else ():
+            patch.set("bvh_aabb", node, model.bvh_aabb[node] * size)  # the body's geoms' bounding boxes
         geoms = np.flatnonzero(model.geom_bodyid == body)
         if (model.geom_type[geoms] == mujoco.mjtGeom.mjGEOM_MESH).any():
             raise NotPatchable(
@@ -244,9 +252,9 @@ def _home_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
     patch.set("key_qpos", home, qpos)
 
 
-def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved) -> ModelPatch:
+def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved, rule: str | None = None) -> ModelPatch:
     """What turns ``model`` (the compiled ``base``) into the compiled ``variant``; :class:`NotPatchable`
-    names the first change that needs a compile."""
+    names the first change that needs a compile. ``rule``: :func:`dampratio_rule` of ``model``, if known."""
     different = _structure_problem(base, variant)
     if different is not None:
         raise NotPatchable(f"{different}: not a patchable field ({', '.join(PATCHABLE)}); compile the variant")
@@ -255,39 +263,67 @@ def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved) -> Mod
     _actuator_entries(patch, model, base, variant)
     _body_entries(patch, model, base, variant)
     _home_entries(patch, model, base, variant)
+    patch.dampratio_rule = rule if rule is not None else dampratio_rule(model, patch.dampratio)
     return patch
 
 
-def resolve_dampratios(model: mujoco.MjModel, ratios: dict[int, float]) -> None:
+def _reflected_inertias(model: mujoco.MjModel, data: mujoco.MjData, actuators: list[int]) -> dict[str, NDArray[np.float64]]:
+    """Per actuator, the two inertias MuJoCo's compilers have used for a dampratio: the diagonal of the
+    inertia matrix at qpos0 (``dof_M0``, MuJoCo 3.9) and ``1 / (M^-1)_ii`` (MuJoCo 4.0), over gear^2."""
+    data.qpos[:] = model.qpos0
+    mujoco.mj_forward(model, data)  # at qpos0: the inertia matrix and its factorization
+    dofs = model.jnt_dofadr[model.actuator_trnid[actuators, 0]]
+    units = np.zeros((len(actuators), model.nv))
+    units[np.arange(len(actuators)), dofs] = 1.0
+    solved = np.zeros_like(units)
+    mujoco.mj_solveM(model, data, solved, units)
+    gear2 = model.actuator_gear[actuators, 0] ** 2
+    return {"diagonal": model.dof_M0[dofs] / gear2, "inverse": 1.0 / (gear2 * solved[np.arange(len(actuators)), dofs])}
+
+
+def dampratio_rule(model: mujoco.MjModel, ratios: dict[int, float]) -> str:
+    """Which inertia this MuJoCo's compiler used for the dampratios of ``model`` (as compiled): the
+    rule whose damping reproduces the compiled ``biasprm[2]``."""
+    if not ratios:
+        return "inverse"
+    actuators = sorted(ratios)
+    inertias = _reflected_inertias(model, mujoco.MjData(model), actuators)
+    compiled = model.actuator_biasprm[actuators, 2]
+    kp, ratio = model.actuator_gainprm[actuators, 0], np.array([ratios[a] for a in actuators])
+    errors = {rule: np.abs(-ratio * 2 * np.sqrt(kp * inertia) - compiled).max() for rule, inertia in inertias.items()}
+    return min(errors, key=errors.__getitem__)
+
+
+def resolve_dampratios(model: mujoco.MjModel, data: mujoco.MjData, ratios: dict[int, float], rule: str) -> None:
     """Give each actuator the ``biasprm[2]`` MuJoCo's compiler gives a ``dampratio``: the ratio times
-    the critical damping of the inertia its joint reflects at qpos0, ``1 / (gear^2 (M^-1)_ii)``."""
+    the critical damping of the inertia its joint reflects at qpos0 (by ``rule``)."""
     if not ratios:
         return
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)  # at qpos0: the inertia matrix and its factorization
-    for actuator, ratio in ratios.items():
-        dof = model.jnt_dofadr[model.actuator_trnid[actuator, 0]]
-        unit = np.zeros((1, model.nv))
-        unit[0, dof] = 1.0
-        solved = np.zeros((1, model.nv))
-        mujoco.mj_solveM(model, data, solved, unit)
-        reflected = 1.0 / (model.actuator_gear[actuator, 0] ** 2 * solved[0, dof])
-        model.actuator_biasprm[actuator, 2] = -ratio * 2.0 * np.sqrt(model.actuator_gainprm[actuator, 0] * reflected)
+    actuators = sorted(ratios)
+    inertia = _reflected_inertias(model, data, actuators)[rule]
+    kp, ratio = model.actuator_gainprm[actuators, 0], np.array([ratios[a] for a in actuators])
+    model.actuator_biasprm[actuators, 2] = -ratio * 2.0 * np.sqrt(kp * inertia)
 
 
-def apply_patch(model: mujoco.MjModel, patch: ModelPatch) -> None:
-    """Write ``patch`` into ``model`` (a copy you own) and recompute what MuJoCo derives from it."""
+def apply_patch(model: mujoco.MjModel, patch: ModelPatch, data: mujoco.MjData | None = None) -> None:
+    """Write ``patch`` into ``model`` (a copy you own) and recompute what MuJoCo derives from it
+    (``data``: scratch data of ``model``, made when not given; its state is overwritten)."""
+    data = mujoco.MjData(model) if data is None else data
     for name, row, value in patch.entries:
         getattr(model, name)[row] = value
-    mujoco.mj_setConst(model, mujoco.MjData(model))
-    resolve_dampratios(model, patch.dampratio)
+    mujoco.mj_setConst(model, data)
+    resolve_dampratios(model, data, patch.dampratio, patch.dampratio_rule)
     # The compiler's statistics that physics reads (the solvers scale by meaninertia); mj_setConst
     # leaves them. extent, center and meansize (drawing only) keep the compiled robot's values.
     if model.nv:
         model.stat.meaninertia = float(np.mean(model.dof_M0))
     if model.nbody > 1:
         model.stat.meanmass = float(np.mean(model.body_mass[1:]))
-    if model.nkey and model.nu:  # the home controls hold the home pose with the patched gains
+    # The home controls hold the home pose: new ones when the pose, a gain or a control range changes
+    # (a dampratio's biasprm[2] is not read by them).
+    holding = {"key_qpos", "actuator_gainprm", "actuator_ctrlrange"}
+    bias = any(name == "actuator_biasprm" and row not in patch.dampratio for name, row, _ in patch.entries)
+    if model.nkey and model.nu and (bias or holding & set(patch.fields)):
         home = model.key("home").id
         model.key_ctrl[home] = home_control(model, model.key_qpos[home])
 

@@ -19,10 +19,15 @@ import numpy as np
 from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import RobotModel
 from assembler.registry.instances import assemble
-from assembler.spec.documents import parse_overrides
+from assembler.spec.documents import Override, parse_overrides, parse_path
 from assembler.warp.loading import mujoco_warp, warp_types
 from assembler.warp.world_values import SET_CONST_OUTPUTS, refused_fields, world_patches, world_values
 from assembler.worlds.variants.plan import VariantPlan
+
+
+def model_fields() -> set[str]:
+    """Every field of ``mujoco_warp.Model``."""
+    return {f.name for f in dataclasses.fields(warp_types.Model)}
 
 
 def batchable_fields() -> set[str]:
@@ -56,9 +61,19 @@ class WarpBatch:
         return len(self.overrides)
 
 
-def _override_texts(plan: VariantPlan, variant: dict[str, Any]) -> list[str]:
+def override_texts(plan: VariantPlan, variant: dict[str, Any]) -> list[str]:
+    """A variant's overrides as ``PATH=VALUE`` texts: the plan's ``--set`` ones, then its own."""
     chosen = [f"{key}={json.dumps(value)}" for key, value in variant.items()]
     return [*plan.fixed, *chosen]
+
+
+def variant_items(plan: VariantPlan, variants: list[dict[str, Any]]) -> list[list[Override]]:
+    """Each variant's overrides, parsed: the plan's fixed ones once, the chosen values as they are
+    (the values a plan draws are numbers already; nothing is read back from text)."""
+    fixed = parse_overrides(plan.fixed, "--set ")
+    paths = {key: parse_path(key) for key in plan.varied()}
+    flags = {key: plan.flag_of(key) + " " for key in plan.varied()}
+    return [[*fixed, *(Override(paths[k], v, flags[k]) for k, v in variant.items())] for variant in variants]
 
 
 def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | None = None) -> WarpBatch:
@@ -70,12 +85,12 @@ def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | Non
     robot: RobotModel = assemble(plan.robot, plan.idn, plan.base, grippers, overrides=list(plan.fixed))
     model = robot.get_model(cache=plan.cache, store=plan.store)
     variants = plan.variant_overrides()
-    texts = [_override_texts(plan, variant) for variant in variants]
+    texts = [override_texts(plan, variant) for variant in variants]
     labels = [f"world {i} ({', '.join(t[len(plan.fixed) :])})" for i, t in enumerate(texts)]
-    items = [parse_overrides(t, "--set ") for t in texts]
+    items = variant_items(plan, variants)
     patches = world_patches(robot, model, items, labels)
     batchable = batchable_fields()
-    refused_fields(patches, batchable, labels)
+    refused_fields(patches, model_fields(), batchable, labels)
     written = {name for patch in patches for name in patch.fields if name in batchable}
     varied = sorted(written | ({f for f in SET_CONST_OUTPUTS if f in batchable} if written else set()))
     values = world_values(model, patches, varied)

@@ -60,9 +60,11 @@ def world_patches(
     is refused with its label (``world 3 (bodies[0].size_scale=1.2)``) and the field."""
     own = Resolved.of(robot)
     patches: list[ModelPatch] = []
+    rule: str | None = None  # how this MuJoCo resolves a dampratio: found once, on the first world
     for items, label in zip(overrides, labels, strict=True):
         try:
-            patches.append(model_patch(model, own, resolve_variant(robot, own, items)))
+            patches.append(model_patch(model, own, resolve_variant(robot, own, items), rule))
+            rule = patches[-1].dampratio_rule
         except NotPatchable as error:
             raise NotPatchable(f"{label}: {error}") from None
     return patches
@@ -77,9 +79,10 @@ def world_values(model: mujoco.MjModel, patches: Sequence[ModelPatch], fields: S
     values = {name: np.empty((len(patches), *getattr(model, name).shape)) for name in fields}
     qpos = np.empty((len(patches), model.nq))
     ctrl = np.empty((len(patches), model.nu))
+    scratch = mujoco.MjData(model)
     try:
         for world, patch in enumerate(patches):
-            apply_patch(model, patch)
+            apply_patch(model, patch, scratch)
             for name in fields:
                 values[name][world] = getattr(model, name)
             qpos[world] = model.key_qpos[home] if home is not None else model.qpos0
@@ -89,16 +92,19 @@ def world_values(model: mujoco.MjModel, patches: Sequence[ModelPatch], fields: S
     finally:
         for name, array in saved.items():
             getattr(model, name)[:] = array
-        mujoco.mj_setConst(model, mujoco.MjData(model))
+        mujoco.mj_setConst(model, scratch)
         model.stat.meaninertia, model.stat.meanmass = stat
     return WorldValues(values, qpos, ctrl)
 
 
-def refused_fields(patches: Sequence[ModelPatch], batchable: set[str], labels: Sequence[str]) -> None:
-    """One line naming the first field a world varies that MuJoCo Warp cannot vary per world."""
+def refused_fields(
+    patches: Sequence[ModelPatch], fields: set[str], batchable: set[str], labels: Sequence[str]
+) -> None:
+    """One line naming the first field a world varies that MuJoCo Warp has (``fields``) but cannot vary
+    per world; fields it does not have (``bvh_aabb``, ``dof_M0``) do not reach it."""
     for patch, label in zip(patches, labels, strict=True):
         for name in patch.fields:
-            if name not in batchable and name not in HOME_FIELDS:
+            if name in fields and name not in batchable and name not in HOME_FIELDS:
                 raise AssemblerError(
                     f"{label}: varies {name}, which MuJoCo Warp cannot vary per world "
                     "(fields it can vary start with '*' in mujoco_warp's types.Model); "
