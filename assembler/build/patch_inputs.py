@@ -20,7 +20,7 @@ from pydantic import ValidationError
 from assembler.errors import SpecError
 from assembler.models import RobotModel
 from assembler.models.joint_rules import JointTable
-from assembler.models.physical import PhysicalTable, resolve_physical
+from assembler.models.physical import PhysicalTable, element_names, resolve_physical
 from assembler.models.preparation import init_qpos_problems, joint_table
 from assembler.registry.catalog import with_overrides
 from assembler.registry.instances import DEFAULT, assemble
@@ -47,6 +47,9 @@ class Resolved:
     dump: dict[str, Any]
     """``spec.model_dump()``, made once: patches compare the fields they cannot patch."""
 
+    names: tuple[list[str], list[str]]
+    """The robot part's named bodies and geoms (what ``bodies:`` and ``geoms:`` match), read once."""
+
     owner: mujoco.MjSpec
     """The prepared spec holding ``actuators``: kept alive with them (MuJoCo 3.9's bindings free the
     elements of a spec nothing refers to)."""
@@ -62,6 +65,7 @@ class Resolved:
             robot.physical,
             list(robot.prepared_mjspec.actuators),
             robot.spec.model_dump(),
+            element_names(robot.prepared_mjspec),
             robot.prepared_mjspec,
         )
 
@@ -69,12 +73,14 @@ class Resolved:
 def _quick_spec(resolved: Resolved, overrides: Sequence[Override]) -> RobotSpec | None:
     """The robot's spec with ``overrides`` put into its dump and validated again, or None when that
     fails; cheaper than the document path (positions, inheritance), which reports the failure."""
-    data = copy.deepcopy(resolved.dump)
+    data = dict(resolved.dump)
     for override in overrides:
         container: Any = data
         try:
-            for part in override.path[:-1]:
-                container = container[part]
+            for part in override.path[:-1]:  # copy what the path goes through; share the rest
+                inner = container[part]
+                container[part] = inner = dict(inner) if isinstance(inner, dict) else list(inner)
+                container = inner
             container[override.path[-1]] = copy.deepcopy(override.value)
         except (KeyError, IndexError, TypeError):
             return None
@@ -108,9 +114,12 @@ def resolve_variant(
     except SpecError as error:
         problems += error.problems
         joints = {}
-    physical, physical_problems = resolve_physical(prepared.mjspec, spec.bodies, spec.geoms, type(base).spec_problem)
+    physical, physical_problems = resolve_physical(
+        prepared.mjspec, spec.bodies, spec.geoms, type(base).spec_problem, resolved.names
+    )
     problems += physical_problems
     if problems:
         raise SpecError([blame(p, overrides, note=False) for p in problems])
     actuators = resolved.actuators
-    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, resolved.owner)
+    names, owner = resolved.names, resolved.owner
+    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, names, owner)

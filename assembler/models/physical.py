@@ -67,13 +67,23 @@ def _named(elements: Sequence[mujoco.MjsBody] | Sequence[mujoco.MjsGeom]) -> lis
     return [element.name for element in elements if element.name]
 
 
+def element_names(mjspec: mujoco.MjSpec) -> tuple[list[str], list[str]]:
+    """The named bodies (the world excluded) and named geoms of a part's spec, in file order."""
+    return _named(mjspec.bodies[1:]), _named(mjspec.geoms)
+
+
 def resolve_physical(
-    mjspec: mujoco.MjSpec, bodies: Sequence[BodyScale], geoms: Sequence[GeomFriction], problem: SpecProblem
+    mjspec: mujoco.MjSpec,
+    bodies: Sequence[BodyScale],
+    geoms: Sequence[GeomFriction],
+    problem: SpecProblem,
+    names: tuple[list[str], list[str]] | None = None,
 ) -> tuple[PhysicalTable, list[Problem]]:
-    """Each named body's factors and each named geom's friction; the entries matching nothing."""
+    """Each named body's factors and each named geom's friction; the entries matching nothing.
+    ``names``: :func:`element_names` of ``mjspec``, when the caller has them."""
     table = PhysicalTable()
     problems: list[Problem] = []
-    body_names = _named(mjspec.bodies[1:])
+    body_names, geom_names = names if names is not None else element_names(mjspec)
     for index, entry in enumerate(bodies):
         matched = matching_joints(entry.match, body_names)
         if not matched:
@@ -82,7 +92,6 @@ def resolve_physical(
         for name in matched:
             for factor, value in entry.values().items():
                 table.bodies.setdefault(name, {})[factor] = PhysicalValue(value, "bodies", index)
-    geom_names = _named(mjspec.geoms)
     for index, friction in enumerate(geoms):
         matched = matching_joints(friction.match, geom_names)
         if not matched:
@@ -90,7 +99,8 @@ def resolve_physical(
             problems.append(problem(here, no_match(friction.match, geom_names, "geom")))
         for name in matched:
             table.geoms[name] = PhysicalValue(friction.friction, "geoms", index)
-    problems += _shared_mesh_problems(mjspec, table, problem)
+    if any(table.factors(body)[0] != 1.0 for body in table.bodies):  # only a size factor scales meshes
+        problems += _shared_mesh_problems(mjspec, table, problem)
     return table, problems
 
 

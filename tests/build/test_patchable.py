@@ -13,6 +13,7 @@ import pytest
 
 import assembler
 from assembler.build.patch_inputs import Resolved, resolve_variant
+from assembler.errors import SpecError
 from assembler.build.patchable import PATCHABLE, NotPatchable, apply_patch, model_patch, patched_model
 from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
@@ -128,3 +129,17 @@ def test_a_structural_change_is_refused_with_the_field_it_changes(overrides: dic
     model = base.get_model(cache=False, store=False)
     with pytest.raises(NotPatchable, match=message):
         model_patch(model, Resolved.of(base), Resolved.of(assembler.assemble("Panda", overrides=overrides)))
+
+
+def test_a_variant_value_the_schema_refuses_is_named_by_its_flag() -> None:
+    base = assembler.assemble("Sparrow7")
+    items = parse_overrides({"joint_defaults.damping": -0.2}, "--normal ")
+    with pytest.raises(SpecError, match=r"^--normal joint_defaults.damping: "):
+        resolve_variant(base, Resolved.of(base), items)
+
+
+def test_a_variant_list_of_the_wrong_length_is_named_by_its_flag() -> None:
+    base = assembler.assemble("Sparrow7")
+    items = parse_overrides({"joint_defaults.damping": [0.1, 0.2]}, "--grid ")
+    with pytest.raises(SpecError, match=r"--grid joint_defaults.damping: expected 7 values \(one per joint\), got 2"):
+        resolve_variant(base, Resolved.of(base), items)
