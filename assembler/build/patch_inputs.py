@@ -33,7 +33,7 @@ LIGHT_SECTIONS = frozenset({"joint_defaults", "joints", "bodies", "geoms", "init
 
 @dataclass(frozen=True)
 class Resolved:
-    """A robot's spec and its tables, unprefixed, as :func:`~assembler.build.patchable.model_patch` reads them."""
+    """A robot's spec and its tables, unprefixed, as ``assembler.build.patchable.model_patch`` reads them."""
 
     spec: RobotSpec
     prefix: str
@@ -122,4 +122,6 @@ def resolve_variant(
         raise SpecError([blame(p, overrides, note=False) for p in problems])
     actuators = resolved.actuators
     names, owner = resolved.names, resolved.owner
-    return Resolved(spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, names, owner)
+    return Resolved(
+        spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, names, owner
+    )

@@ -11,18 +11,14 @@ Anything else (counts, types, names, meshes, added or removed elements) is struc
 
 from __future__ import annotations
 
-import copy
 from dataclasses import dataclass, field
 from typing import Any
 
 import mujoco
 import numpy as np
-from numpy.typing import NDArray
 
-from assembler.errors import AssemblerError
-from assembler.mjcf.keyframe import home_control
 from assembler.build.patch_inputs import Resolved
-from assembler.models import RobotModel
+from assembler.errors import AssemblerError
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
     "joint_defaults.frictionloss, joints[i].frictionloss": ("dof_frictionloss",),
@@ -67,10 +63,10 @@ DERIVED: tuple[str, ...] = (
     "light_pos0",
     "light_poscom0",
 )
-"""Fields ``mj_setConst`` recomputes from the patched ones. Recomputed here as MuJoCo's compiler does:
-a dampratio's ``actuator_biasprm[2]``, the home keyframe's controls, ``stat.meaninertia`` and
-``stat.meanmass``. Not recomputed: ``stat.extent``, ``stat.center`` and ``stat.meansize``, which only
-drawing reads (a size_scale leaves them at the compiled robot's values)."""
+"""Fields ``mj_setConst`` recomputes from the patched ones. Recomputed by :mod:`assembler.build.derived`
+as MuJoCo's compiler does: a dampratio's ``actuator_biasprm[2]``, the home keyframe's controls,
+``stat.meaninertia`` and ``stat.meanmass``. Not recomputed: ``stat.extent``, ``stat.center`` and
+``stat.meansize``, which only drawing reads (a size_scale leaves them at the compiled robot's values)."""
 
 STRUCTURAL = (
     "counts (joints, actuators, bodies, geoms), element types, names, transmissions, mesh data "
@@ -129,8 +125,9 @@ class ModelPatch:
     dampratio: dict[int, float] = field(default_factory=dict)
     """Actuator -> damping ratio: its ``biasprm[2]`` is recomputed after ``mj_setConst``."""
 
-    dampratio_rule: str = "inverse"
-    """How this MuJoCo's compiler resolves a dampratio (see :func:`dampratio_rule`)."""
+    dampratio_rule: str | None = None
+    """How this MuJoCo's compiler resolves a dampratio (``assembler.build.derived.dampratio_rule``);
+    None: read off the model the patch is applied to, before it is patched."""
 
     def set(self, name: str, row: int, value: Any) -> None:
         """Write ``value`` into row ``row`` of the model field ``name``."""
@@ -189,9 +186,10 @@ def _actuator_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, 
         row = model.actuator(variant.prefix + name).id
         for attribute, target in ACTUATOR_VALUES:
             value = np.asarray(getattr(new, attribute), dtype=float)
-            if attribute.endswith("range") and not np.array_equal(value, getattr(old, attribute)):
-                if not value.any() or not np.asarray(getattr(old, attribute)).any():
-                    raise NotPatchable(f"actuators: '{name}' {attribute} switches a limit on or off")
+            changed = not np.array_equal(value, getattr(old, attribute))
+            switched = not value.any() or not np.asarray(getattr(old, attribute)).any()
+            if attribute.endswith("range") and changed and switched:
+                raise NotPatchable(f"actuators: '{name}' {attribute} switches a limit on or off")
             if attribute == "biasprm" and value[2] > 0:  # a dampratio: MuJoCo's compiler resolves it
                 patch.dampratio[row] = float(value[2])
             if not np.array_equal(value, getattr(old, attribute)) or row in patch.dampratio:
@@ -252,85 +250,17 @@ def _home_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
     patch.set("key_qpos", home, qpos)
 
 
-def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved, rule: str | None = None) -> ModelPatch:
+def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved) -> ModelPatch:
     """What turns ``model`` (the compiled ``base``) into the compiled ``variant``; :class:`NotPatchable`
-    names the first change that needs a compile. ``rule``: :func:`dampratio_rule` of ``model``, if known."""
+    names the first change that needs a compile."""
     different = _structure_problem(base, variant)
     if different is not None:
-        raise NotPatchable(f"{different}: not a patchable field ({', '.join(PATCHABLE)}); compile the variant")
+        raise NotPatchable(
+            f"{different}: not a patchable field ({', '.join(PATCHABLE)}); compile the variant"
+        )
     patch = ModelPatch()
     _joint_entries(patch, model, base, variant)
     _actuator_entries(patch, model, base, variant)
     _body_entries(patch, model, base, variant)
     _home_entries(patch, model, base, variant)
-    patch.dampratio_rule = rule if rule is not None else dampratio_rule(model, patch.dampratio)
     return patch
-
-
-def _reflected_inertias(model: mujoco.MjModel, data: mujoco.MjData, actuators: list[int]) -> dict[str, NDArray[np.float64]]:
-    """Per actuator, the two inertias MuJoCo's compilers have used for a dampratio: the diagonal of the
-    inertia matrix at qpos0 (``dof_M0``, MuJoCo 3.9) and ``1 / (M^-1)_ii`` (MuJoCo 4.0), over gear^2."""
-    data.qpos[:] = model.qpos0
-    mujoco.mj_forward(model, data)  # at qpos0: the inertia matrix and its factorization
-    dofs = model.jnt_dofadr[model.actuator_trnid[actuators, 0]]
-    units = np.zeros((len(actuators), model.nv))
-    units[np.arange(len(actuators)), dofs] = 1.0
-    solved = np.zeros_like(units)
-    mujoco.mj_solveM(model, data, solved, units)
-    gear2 = model.actuator_gear[actuators, 0] ** 2
-    return {"diagonal": model.dof_M0[dofs] / gear2, "inverse": 1.0 / (gear2 * solved[np.arange(len(actuators)), dofs])}
-
-
-def dampratio_rule(model: mujoco.MjModel, ratios: dict[int, float]) -> str:
-    """Which inertia this MuJoCo's compiler used for the dampratios of ``model`` (as compiled): the
-    rule whose damping reproduces the compiled ``biasprm[2]``."""
-    if not ratios:
-        return "inverse"
-    actuators = sorted(ratios)
-    inertias = _reflected_inertias(model, mujoco.MjData(model), actuators)
-    compiled = model.actuator_biasprm[actuators, 2]
-    kp, ratio = model.actuator_gainprm[actuators, 0], np.array([ratios[a] for a in actuators])
-    errors = {rule: np.abs(-ratio * 2 * np.sqrt(kp * inertia) - compiled).max() for rule, inertia in inertias.items()}
-    return min(errors, key=errors.__getitem__)
-
-
-def resolve_dampratios(model: mujoco.MjModel, data: mujoco.MjData, ratios: dict[int, float], rule: str) -> None:
-    """Give each actuator the ``biasprm[2]`` MuJoCo's compiler gives a ``dampratio``: the ratio times
-    the critical damping of the inertia its joint reflects at qpos0 (by ``rule``)."""
-    if not ratios:
-        return
-    actuators = sorted(ratios)
-    inertia = _reflected_inertias(model, data, actuators)[rule]
-    kp, ratio = model.actuator_gainprm[actuators, 0], np.array([ratios[a] for a in actuators])
-    model.actuator_biasprm[actuators, 2] = -ratio * 2.0 * np.sqrt(kp * inertia)
-
-
-def apply_patch(model: mujoco.MjModel, patch: ModelPatch, data: mujoco.MjData | None = None) -> None:
-    """Write ``patch`` into ``model`` (a copy you own) and recompute what MuJoCo derives from it
-    (``data``: scratch data of ``model``, made when not given; its state is overwritten)."""
-    data = mujoco.MjData(model) if data is None else data
-    for name, row, value in patch.entries:
-        getattr(model, name)[row] = value
-    mujoco.mj_setConst(model, data)
-    resolve_dampratios(model, data, patch.dampratio, patch.dampratio_rule)
-    # The compiler's statistics that physics reads (the solvers scale by meaninertia); mj_setConst
-    # leaves them. extent, center and meansize (drawing only) keep the compiled robot's values.
-    if model.nv:
-        model.stat.meaninertia = float(np.mean(model.dof_M0))
-    if model.nbody > 1:
-        model.stat.meanmass = float(np.mean(model.body_mass[1:]))
-    # The home controls hold the home pose: new ones when the pose, a gain or a control range changes
-    # (a dampratio's biasprm[2] is not read by them).
-    holding = {"key_qpos", "actuator_gainprm", "actuator_ctrlrange"}
-    bias = any(name == "actuator_biasprm" and row not in patch.dampratio for name, row, _ in patch.entries)
-    if model.nkey and model.nu and (bias or holding & set(patch.fields)):
-        home = model.key("home").id
-        model.key_ctrl[home] = home_control(model, model.key_qpos[home])
-
-
-def patched_model(model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> mujoco.MjModel:
-    """A copy of ``model`` (the compiled ``base``) patched into the compiled ``variant``."""
-    patch = model_patch(model, Resolved.of(base), Resolved.of(variant))
-    patched = copy.copy(model)  # MuJoCo's mj_copyModel: its own arrays
-    apply_patch(patched, patch)
-    return patched

@@ -15,8 +15,9 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.build.derived import apply_patch, dampratio_rule
 from assembler.build.patch_inputs import Resolved, resolve_variant
-from assembler.build.patchable import ModelPatch, NotPatchable, apply_patch, model_patch
+from assembler.build.patchable import ModelPatch, NotPatchable, model_patch
 from assembler.errors import AssemblerError
 from assembler.models import RobotModel
 from assembler.spec.documents import Override
@@ -60,11 +61,9 @@ def world_patches(
     is refused with its label (``world 3 (bodies[0].size_scale=1.2)``) and the field."""
     own = Resolved.of(robot)
     patches: list[ModelPatch] = []
-    rule: str | None = None  # how this MuJoCo resolves a dampratio: found once, on the first world
     for items, label in zip(overrides, labels, strict=True):
         try:
-            patches.append(model_patch(model, own, resolve_variant(robot, own, items), rule))
-            rule = patches[-1].dampratio_rule
+            patches.append(model_patch(model, own, resolve_variant(robot, own, items)))
         except NotPatchable as error:
             raise NotPatchable(f"{label}: {error}") from None
     return patches
@@ -80,8 +79,10 @@ def world_values(model: mujoco.MjModel, patches: Sequence[ModelPatch], fields: S
     qpos = np.empty((len(patches), model.nq))
     ctrl = np.empty((len(patches), model.nu))
     scratch = mujoco.MjData(model)
+    rule = dampratio_rule(model, patches[0].dampratio) if patches else None  # once, off the compiled robot
     try:
         for world, patch in enumerate(patches):
+            patch.dampratio_rule = rule
             apply_patch(model, patch, scratch)
             for name in fields:
                 values[name][world] = getattr(model, name)

@@ -12,9 +12,10 @@ import numpy as np
 import pytest
 
 import assembler
+from assembler.build.derived import apply_patch, patched_model
 from assembler.build.patch_inputs import Resolved, resolve_variant
+from assembler.build.patchable import PATCHABLE, NotPatchable, model_patch
 from assembler.errors import SpecError
-from assembler.build.patchable import PATCHABLE, NotPatchable, apply_patch, model_patch, patched_model
 from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
 
@@ -61,12 +62,18 @@ DRAWING_STATISTICS = ("stat.extent", "stat.center", "stat.meansize")
 
 def _model_arrays(model: mujoco.MjModel) -> dict[str, np.ndarray]:
     """Every array field of a compiled model, read generically, with opt's and stat's numbers."""
-    arrays = {name: value for name in dir(model) if isinstance(value := getattr(model, name, None), np.ndarray)}
+    arrays = {
+        name: value for name in dir(model) if isinstance(value := getattr(model, name, None), np.ndarray)
+    }
     for struct in ("opt", "stat"):
         for name in dir(getattr(model, struct)):
             value = getattr(getattr(model, struct), name)
             key = f"{struct}.{name}"
-            if isinstance(value, (float, int, np.ndarray)) and not name.startswith("_") and key not in DRAWING_STATISTICS:
+            if (
+                isinstance(value, (float, int, np.ndarray))
+                and not name.startswith("_")
+                and key not in DRAWING_STATISTICS
+            ):
                 arrays[key] = np.asarray(value)
     return arrays
 
@@ -76,7 +83,9 @@ def _register_declared(write: Write) -> None:
     assembler.register_specs(write("d/declared.yaml", DECLARED))
 
 
-def _both_ways(robot: str, overrides: dict[str, Any]) -> tuple[list[mujoco.MjModel], mujoco.MjModel, list[str]]:
+def _both_ways(
+    robot: str, overrides: dict[str, Any]
+) -> tuple[list[mujoco.MjModel], mujoco.MjModel, list[str]]:
     """The variant patched (its tables resolved in full, and against the robot's MJCF), and compiled."""
     base = assembler.assemble(robot)
     model = base.get_model(cache=False, store=False)
@@ -89,7 +98,9 @@ def _both_ways(robot: str, overrides: dict[str, Any]) -> tuple[list[mujoco.MjMod
     return [patched_model(model, base, variant), lightly], compiled, patch.fields
 
 
-@pytest.mark.parametrize(("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)])
+@pytest.mark.parametrize(
+    ("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)]
+)
 def test_a_patched_variant_equals_its_full_compile_in_every_model_field(
     write: Write, robot: str, overrides: dict[str, Any]
 ) -> None:
@@ -124,7 +135,9 @@ def test_the_cases_write_every_model_field_the_table_names(write: Write) -> None
         ({"actuators": [{"match": "joint1", "kp": 10}]}, "actuators: the variant has other actuators"),
     ],
 )
-def test_a_structural_change_is_refused_with_the_field_it_changes(overrides: dict[str, Any], message: str) -> None:
+def test_a_structural_change_is_refused_with_the_field_it_changes(
+    overrides: dict[str, Any], message: str
+) -> None:
     base = assembler.assemble("Panda")
     model = base.get_model(cache=False, store=False)
     with pytest.raises(NotPatchable, match=message):
@@ -141,5 +154,7 @@ def test_a_variant_value_the_schema_refuses_is_named_by_its_flag() -> None:
 def test_a_variant_list_of_the_wrong_length_is_named_by_its_flag() -> None:
     base = assembler.assemble("Sparrow7")
     items = parse_overrides({"joint_defaults.damping": [0.1, 0.2]}, "--grid ")
-    with pytest.raises(SpecError, match=r"--grid joint_defaults.damping: expected 7 values \(one per joint\), got 2"):
+    with pytest.raises(
+        SpecError, match=r"--grid joint_defaults.damping: expected 7 values \(one per joint\), got 2"
+    ):
         resolve_variant(base, Resolved.of(base), items)
