@@ -18,6 +18,7 @@ from assembler.build.patchable import PATCHABLE, NotPatchable, model_patch
 from assembler.errors import SpecError
 from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
+from tests.models.test_physical import CUBE_OBJ, MESH_MJCF
 
 Write = Callable[[str, str], Path]
 
@@ -131,17 +132,20 @@ def test_the_cases_write_every_model_field_the_table_names(write: Write) -> None
     ("overrides", "message"),
     [
         ({"remove_free_joint": True}, "remove_free_joint: not a patchable field"),
-        ({"bodies": [{"match": "link1", "size_scale": 1.1}]}, "size_scale of 'link1' scales its meshes"),
-        ({"actuators": [{"match": "joint1", "kp": 10}]}, "actuators: the variant has other actuators"),
+        ({"bodies": [{"match": "*", "size_scale": 1.1}]}, "size_scale of '(base|link1)' scales its meshes"),
+        ({"actuators": [{"match": "j1", "kp": 10}]}, "actuators: the variant has other actuators"),
     ],
 )
 def test_a_structural_change_is_refused_with_the_field_it_changes(
-    overrides: dict[str, Any], message: str
+    write: Write, overrides: dict[str, Any], message: str
 ) -> None:
-    base = assembler.assemble("Panda")
+    write("m/block.obj", CUBE_OBJ)
+    write("m/meshy.xml", MESH_MJCF)
+    assembler.register_specs(write("m/meshy.yaml", "name: Meshy\nmjcf: meshy.xml\n"))
+    base = assembler.assemble("Meshy")
     model = base.get_model(cache=False, store=False)
     with pytest.raises(NotPatchable, match=message):
-        model_patch(model, Resolved.of(base), Resolved.of(assembler.assemble("Panda", overrides=overrides)))
+        model_patch(model, Resolved.of(base), Resolved.of(assembler.assemble("Meshy", overrides=overrides)))
 
 
 def test_a_variant_value_the_schema_refuses_is_named_by_its_flag() -> None:
