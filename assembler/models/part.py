@@ -27,6 +27,7 @@ from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.collision_colour import collision_colour_note, colour_collision_geoms
 from assembler.models.joint_rules import JointTable
+from assembler.models.physical import PhysicalTable, apply_physical
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
 from assembler.models.spec_names import NameCheck
@@ -159,10 +160,17 @@ class PartModel(metaclass=RegisteringMeta):
         """Every actuator of the part (unprefixed): the file's, then the spec's, with each value's source."""
         return self.prepared().actuators
 
+    @property
+    def physical(self) -> PhysicalTable:
+        """Body -> mass and size factors, geom -> friction, with the spec entries that gave them."""
+        return self.prepared().physical
+
     def part_mjspec(self) -> mujoco.MjSpec:
-        """A fresh copy of the prepared spec, with joint values applied, and robosuite's collision
-        colours where the spec asks for them (``collision_colour: robosuite``)."""
+        """A fresh copy of the prepared spec, with joint values, the ``bodies:``/``geoms:`` entries
+        applied, and robosuite's collision colours where the spec asks for them
+        (``collision_colour: robosuite``)."""
         mjspec = self.prepared_mjspec.copy()
+        apply_physical(mjspec, self.physical)
         for name, values in self.joint_values.items():
             joint = mjspec.joint(name)
             for attribute, joint_value in values.items():
