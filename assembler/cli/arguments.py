@@ -24,6 +24,9 @@ DIFF_FORMATS: tuple[str, ...] = ("json", "markdown", "text")
 VIEWS: tuple[str, ...] = ("front", "side", "top", "iso")
 """``assembler render``'s views (``assembler.tools.render.VIEWS``; a test keeps them equal)."""
 
+LINT_TARGETS: tuple[str, ...] = ("mujoco", "mjwarp", "mjx")
+"""``assembler lint --target`` choices (``assembler.tools.lint.ENGINES``; a test keeps them equal)."""
+
 LABELS: tuple[str, ...] = ("bodies", "joints", "sites")
 """``assembler render --labels`` choices (``assembler.tools.render.LABELS``; a test keeps them equal)."""
 
@@ -152,6 +155,13 @@ def _lint(parser: argparse.ArgumentParser) -> None:
         nargs="*",
         metavar="ROBOT",
         help="more robots, spec files or spec folders (bases and grippers alone)",
+    )
+    parser.add_argument(
+        "--target",
+        choices=LINT_TARGETS,
+        default="mujoco",
+        help="also report what this engine refuses or runs badly: mjwarp (MuJoCo Warp, RA801-803), "
+        "mjx (MJX, RA811-815); the engines need not be installed",
     )
     add_format_argument(parser)
 
