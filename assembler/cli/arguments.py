@@ -27,6 +27,9 @@ VIEWS: tuple[str, ...] = ("front", "side", "top", "iso")
 LINT_TARGETS: tuple[str, ...] = ("mujoco", "mjwarp", "mjx")
 """``assembler lint --target`` choices (``assembler.tools.lint.ENGINES``; a test keeps them equal)."""
 
+BUILD_TARGETS: tuple[str, ...] = ("mujoco", "mjwarp")
+"""``assembler build --target`` choices: MuJoCo alone, or also MuJoCo Warp's put_model."""
+
 LABELS: tuple[str, ...] = ("bodies", "joints", "sites")
 """``assembler render --labels`` choices (``assembler.tools.render.LABELS``; a test keeps them equal)."""
 
@@ -170,6 +173,12 @@ def _build(parser: argparse.ArgumentParser) -> None:
     add_assembly_arguments(parser)
     _output(parser)
     parser.add_argument("--bundle", metavar="DIR", help="write the XML and copies of its assets to DIR")
+    parser.add_argument(
+        "--target",
+        choices=BUILD_TARGETS,
+        default="mujoco",
+        help="mjwarp: also hand the model to MuJoCo Warp's put_model (when installed) before writing",
+    )
 
 
 def _scene(parser: argparse.ArgumentParser) -> None:

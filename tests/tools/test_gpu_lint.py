@@ -8,6 +8,7 @@ these in the engines' own environments: .ci/warp for MuJoCo Warp, .ci/mjx for MJ
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import math
 import re
@@ -145,16 +146,21 @@ def test_the_lint_targets_on_the_command_line_are_the_engines_lint_knows() -> No
 # ----- a clean robot ----------------------------------------------------------------------------
 
 
-def test_a_clean_robot_passes_both_engines_put_model_and_has_no_gpu_errors_or_warnings(
-    capsys: pytest.CaptureFixture[str], write: Write, warp: ModuleType, mjx: ModuleType
+def test_a_clean_robot_passes_mujoco_warps_put_model_and_lint_only_says_its_contact_room(
+    capsys: pytest.CaptureFixture[str], write: Write, warp: ModuleType
 ) -> None:
     spec = robot(write)
-    model = compiled(spec)
-    warp.put_model(model)
-    mjx.put_model(model)
-    warp_findings = gpu_findings(capsys, spec, "mjwarp")
-    assert codes(warp_findings) == [("RA803", "info", "GpuProbe")]
-    assert "leaves room for 15 contacts per world" in warp_findings[0]["why"]
+    warp.put_model(compiled(spec))
+    findings = gpu_findings(capsys, spec, "mjwarp")
+    assert codes(findings) == [("RA803", "info", "GpuProbe")]
+    assert "leaves room for 15 contacts per world" in findings[0]["why"]
+
+
+def test_a_clean_robot_passes_mjxs_put_model_and_has_no_mjx_findings(
+    capsys: pytest.CaptureFixture[str], write: Write, mjx: ModuleType
+) -> None:
+    spec = robot(write)
+    mjx.put_model(compiled(spec))
     assert gpu_findings(capsys, spec, "mjx") == []
 
 
@@ -411,3 +417,42 @@ def test_the_refusal_tables_are_mjxs_own(mjx: ModuleType) -> None:
     assert {n for n, v in members if int(v) not in have and not n.startswith("mjN")} == set(
         MJX_ENABLE_REFUSED
     )
+
+
+# ----- assembler build --target mjwarp ----------------------------------------------------------
+
+
+def test_build_for_mujoco_warp_hands_the_model_to_its_put_model_and_writes_it(
+    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path, warp: ModuleType
+) -> None:
+    out = tmp_path / "probe_out.xml"
+    assert main(["build", str(robot(write)), "--target", "mjwarp", "-o", str(out)]) == 0
+    assert "GpuProbe: MuJoCo Warp 4.0.0 accepted the model (put_model)" in capsys.readouterr().err
+    assert mujoco.MjModel.from_xml_path(str(out)).nu == 2
+
+
+def test_build_for_mujoco_warp_of_a_model_it_refuses_fails_in_one_line_and_writes_nothing(
+    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path, warp: ModuleType
+) -> None:
+    out = tmp_path / "probe_out.xml"
+    spec = robot(write, option='<option solver="PGS"/>')
+    assert main(["build", str(spec), "--target", "mjwarp", "-o", str(out)]) == 1
+    assert capsys.readouterr().err.splitlines()[-1] == (
+        "GpuProbe: MuJoCo Warp's put_model refuses the model: mjSOL_PGS is unsupported. (assembler lint "
+        "GpuProbe --target mjwarp names the element and the fix)"
+    )
+    assert not out.exists()
+
+
+def test_build_for_mujoco_warp_without_it_installed_says_so_and_writes_the_model(
+    capsys: pytest.CaptureFixture[str], write: Write, tmp_path: Path
+) -> None:
+    if importlib.util.find_spec("mujoco_warp") is not None:
+        pytest.skip("MuJoCo Warp is installed here: the two tests above cover it")
+    out = tmp_path / "probe_out.xml"
+    assert main(["build", str(robot(write)), "--target", "mjwarp", "-o", str(out)]) == 0
+    assert capsys.readouterr().err.splitlines()[0] == (
+        "GpuProbe: MuJoCo Warp is not installed, so its put_model did not run (pip install mujoco-warp); "
+        "assembler lint GpuProbe --target mjwarp checks the model without it"
+    )
+    assert out.exists()
