@@ -21,13 +21,15 @@ def check_with_mujoco_warp(model: mujoco.MjModel, name: str) -> str:
     """One line saying MuJoCo Warp's put_model took ``model`` (or is not installed); an
     ``AssemblerError`` with its refusal when it does not take it."""
     try:
+        warp = importlib.import_module("warp")
+        warp.config.quiet = True  # no start-up banner (warp-lang 1.19 reads log_level instead)
+        warp.config.log_level = getattr(warp, "LOG_WARNING", 30)
         engine = importlib.import_module("mujoco_warp")
     except ImportError:
         return (
             f"{name}: MuJoCo Warp is not installed, so its put_model did not run (pip install mujoco-warp); "
             f"assembler lint {name} --target mjwarp checks the model without it"
         )
-    importlib.import_module("warp").config.quiet = True  # its start-up lines would mix with the XML
     try:
         with contextlib.redirect_stdout(sys.stderr):
             engine.put_model(model)

@@ -170,7 +170,7 @@ def warp_constraint_budget(target: LintTarget) -> Iterator[Finding]:
             f"MuJoCo Warp's default njmax of {default} leaves room for {room} contacts per world"
         ),
         fix=(
-            f"with more contacts per world (feet, a grasped object, a cluttered table), pass njmax of "
-            f"{total} + {per_contact} per contact to mujoco_warp.make_data/put_data"
+            f"with more contacts per world (feet, a grasped object, a cluttered table), pass njmax={total} "
+            f"+ {per_contact} x contacts to mujoco_warp.make_data/put_data (mjlab: SimulationCfg)"
         ),
     )
