@@ -26,11 +26,21 @@ RA705  error     joint of a group robosuite's controllers drive without an actua
 RA706  error     base_xpos_offset of an arena other than table with variables
 RA707  error     a part's file reads euler angles in another sequence than xyz
 RA708  error     robosuite.controller that the bridge cannot build (info: robosuite absent)
+RA801  error     MuJoCo Warp refuses an option: PGS solver, some flags, dense Jacobian past 60 dofs
+RA802  error     MuJoCo Warp refuses an element: plugins, PID/SO3 actuators, flexvert equality
+RA803  warning   constraint rows without contact exceed MuJoCo Warp's default njmax
+       info      (or: how many contacts per world the default njmax leaves room for)
+RA811  error     MJX has no collision function for two geoms that can collide (e.g. box-cylinder)
+RA812  error     MJX refuses an option: IMPLICIT integrator, PGS solver, some enable flags
+RA813  error     MJX refuses an element: flex, adhesion and other actuators, some sensors
+RA814  error     MJX refuses margin/gap on a mesh or heightfield pair
+RA815  warning   mesh hull too large for MJX (>200 vertices against primitives, >=32 mesh-mesh)
 =====  ========  ===================================================================
 
-Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
-A finding a part's spec acknowledges (``lint.acknowledge``, with a reason) is reported as
-acknowledged and fails nothing (:mod:`assembler.tools.lint.acknowledgements`).
+Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order,
+and ``lint(target, engine)`` adds :data:`ENGINE_CHECKS` for ``--target mjwarp`` (RA801-RA803) or
+``--target mjx`` (RA811-RA815). A finding a part's spec acknowledges (``lint.acknowledge``, with a
+reason) is reported as acknowledged and fails nothing (:mod:`assembler.tools.lint.acknowledgements`).
 """
 
 from __future__ import annotations
@@ -41,6 +51,14 @@ from assembler.tools.lint.acknowledgements import acknowledge
 from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
 from assembler.tools.lint.armature import tiny_index_armature
 from assembler.tools.lint.finding import SEVERITIES, Finding, Severity
+from assembler.tools.lint.gpu import ENGINES, Engine
+from assembler.tools.lint.gpu_mjx import (
+    mjx_mesh_margins_and_sizes,
+    mjx_missing_collisions,
+    mjx_refused_elements,
+    mjx_refused_options,
+)
+from assembler.tools.lint.gpu_warp import warp_constraint_budget, warp_refused_elements, warp_refused_options
 from assembler.tools.lint.gripper_pose import gripper_root_far_from_hand
 from assembler.tools.lint.important_names import (
     important_geoms_without_contact,
@@ -88,18 +106,29 @@ CHECKS: tuple[Check, ...] = (
 )
 """Every check, in the order of their codes."""
 
+ENGINE_CHECKS: dict[Engine, tuple[Check, ...]] = {
+    "mujoco": (),
+    "mjwarp": (warp_refused_options, warp_refused_elements, warp_constraint_budget),
+    "mjx": (mjx_missing_collisions, mjx_refused_options, mjx_refused_elements, mjx_mesh_margins_and_sizes),
+}
+"""What ``--target`` adds to :data:`CHECKS`: what that engine refuses or runs badly."""
 
-def lint(target: LintTarget) -> list[Finding]:
-    """Every finding of every check on ``target``, acknowledged ones marked: those that fail first
-    (errors), then by severity and code."""
-    findings = acknowledge(target, [finding for check in CHECKS for finding in check(target)])
+
+def lint(target: LintTarget, engine: Engine = "mujoco") -> list[Finding]:
+    """Every finding of every check on ``target`` (and ``engine``'s), acknowledged ones marked: those
+    that fail first (errors), then by severity and code."""
+    checks = (*CHECKS, *ENGINE_CHECKS[engine])
+    findings = acknowledge(target, [finding for check in checks for finding in check(target)])
     return sorted(findings, key=lambda f: (not f.fails, SEVERITIES.index(f.severity), f.code))
 
 
 __all__ = [
     "CHECKS",
+    "ENGINES",
+    "ENGINE_CHECKS",
     "SEVERITIES",
     "Check",
+    "Engine",
     "Finding",
     "LintTarget",
     "Severity",
