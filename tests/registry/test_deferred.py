@@ -71,9 +71,10 @@ def test_a_deferred_robot_becomes_the_robot_it_stands_for_on_any_other_use() -> 
     robot = assembler.assemble("Sparrow7", idn=1)
     assert type(robot) is DeferredRobot
     model = robot.get_model()
-    assert isinstance(robot, assembler.RobotModel) and isinstance(robot, assembler.REGISTERED_ROBOTS["Sparrow7"])
+    sparrow = assembler.REGISTERED_ROBOTS["Sparrow7"]
+    assert isinstance(robot, assembler.RobotModel) and isinstance(robot, sparrow)
     assert robot.naming_prefix == "robot1_"
-    assert type(robot) is assembler.REGISTERED_ROBOTS["Sparrow7"]
+    assert type(robot) is sparrow
     assert [type(part).__name__ for part in robot.models] == [type(part).__name__ for part in made.models]
     assert robot.mjspec.key("home") is not None  # the keyframe of the model it handed out
     compiled = robot.get_model(cache=False)
