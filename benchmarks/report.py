@@ -94,8 +94,9 @@ EXPLANATIONS = [
     "- *1 uncached*: `import assembler; assemble(name).get_model()` with an empty model cache but every",
     "  mesh in the mesh store (a new variant, base or gripper, an edited spec), and with both empty",
     "  (first contact), against `import mujoco; MjModel.from_xml_path(robosuite's XML file)`.",
-    "- *2 warm*: the cache holds the robot: `assembler.load_model(name)` (the request-record fast path)",
-    "  and `assemble(name).get_model()`, against `import mujoco; MjModel.from_binary_path(entry)`.",
+    "- *2 warm*: the cache holds the robot: `assembler.load_model(name)`, and `assemble(name)` followed by",
+    "  `get_model()`, `get_xml()` or `save(file)` (all answered from the request record, no spec read),",
+    "  against `import mujoco; MjModel.from_binary_path(entry)`.",
     "- *3 start-up*: `python -c 'import assembler'` minus `python -c 'import mujoco'`; `assembler --help`",
     "  minus `python -c pass` (absolute seconds against the target).",
     "- *4 get_xml*: warm in-process `assemble(name).get_xml()` against robosuite creating the robot and",
@@ -122,13 +123,13 @@ REASONS: dict[str, str] = {
         "background process that stores them."
     ),
     "2 warm": (
-        "`assembler.load_model` (the request-record path: no spec is read, the record's spec files are "
-        "checked by size and time, the entry by its XXH3 digest) is within 1.2x of the floor for most "
-        "robosuite robots; the misses are the small models (Jaco, Kinova3, SpotArm, XArm7, our own "
-        "primitive robots), whose floor is mostly Python and MuJoCo start-up, so the fixed ~55 ms of "
-        "our imports and checks weigh more. `assemble(name).get_model()` builds the spec layer "
-        "(pydantic, the schema, every shipped spec) before it asks the cache, hence 1.9-2.9x: use "
-        "`load_model` (or `assembler build`, which takes the same path) where start-up matters."
+        "`assembler.load_model` and `assemble(name)` followed by `get_model()`, `get_xml()` or "
+        "`save()` take the request-record path: no spec is read and no schema imported (the record's "
+        "spec files are checked by size and time, the entry by its XXH3 digest), and `assemble` "
+        "returns a robot made on first use of anything else. What is left above the floor is the "
+        "cache layer's imports (the compile service imports the compile path, the MJCF writer and "
+        "the package-path resolver, which a hit does not use) and the digest of the model file; "
+        "it weighs most on small models, whose floor is mostly Python and MuJoCo start-up."
     ),
     "5 variants": (
         "robosuite's `get_xml` is `ElementTree.tostring` of a tree it already holds: it compiles "

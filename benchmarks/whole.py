@@ -102,7 +102,8 @@ def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure
     """Target 2: a new process loading a cached robot, against the ``.mjb`` floor; and how much
     faster than robosuite's cold load that is (no target: it follows from the floor)."""
     env = _cache(scratch / f"w-{name}")
-    run_python("import assembler", f"assembler.load_model({name!r})", env)  # compiles, records, stores
+    # compiles, records the request, stores the model and its XML
+    run_python("import assembler", f"r = assembler.assemble({name!r}); r.get_model(); r.get_xml()", env)
     entry = run_python(
         "import assembler\nfrom assembler.build.service import default_store\n"
         "from assembler.cache.key import cache_key",
@@ -110,12 +111,15 @@ def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure
         'out["path"] = str(s.directory / e.model)',
         env,
     ).inner["path"]
+    out = str(scratch / f"{name}-saved.xml")
     cases: dict[str, Callable[[int], Run]] = {
         "floor": lambda i: run_python("import mujoco", f"mujoco.MjModel.from_binary_path({entry!r})", env),
         "load_model": lambda i: run_python("import assembler", f"assembler.load_model({name!r})", env),
         "get_model": lambda i: run_python(
             "import assembler", f"assembler.assemble({name!r}).get_model()", env
         ),
+        "get_xml": lambda i: run_python("import assembler", f"assembler.assemble({name!r}).get_xml()", env),
+        "save": lambda i: run_python("import assembler", f"assembler.assemble({name!r}).save({out!r})", env),
     }
     if robosuite:
         cases["robosuite"] = lambda i: run_python(
@@ -148,6 +152,18 @@ def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure
             WARM_FLOOR_TARGET,
             note(results["get_model"]),
         ),
+    ]
+    figures += [
+        ratio_figure(
+            "2 warm",
+            f"{name} assemble().{call}",
+            results[case].wall,
+            floor_name,
+            floor.wall,
+            WARM_FLOOR_TARGET,
+            note(results[case]),
+        )
+        for case, call in (("get_xml", "get_xml()"), ("save", "save(file)"))
     ]
     if robosuite:
         speedup = results["robosuite"].wall / results["load_model"].wall
