@@ -16,12 +16,14 @@ holds it keeps holding the robot.
 
 A request without a record (the first time, a changed spec) takes the full path at once, so every
 error is raised by ``assemble`` as always, and is recorded, so that the next process is answered
-from the cache.
+from the cache. A process that has the model classes imported already (it made a robot, or
+imported them) makes every robot at once: that is cheap then, and the object is a plain robot.
 """
 
 from __future__ import annotations
 
 import importlib
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,6 +42,10 @@ from assembler.registry.arguments import DEFAULT, ArgumentKind, argument_kind
 ASSEMBLE = "load_model"
 """The request kind of ``assemble``: ``load_model``'s, whose answer is ``assemble(...).get_model()``."""
 CREATE_ROBOT = "create_robot"
+
+MODEL_CLASSES = "assembler.models"
+"""Once the model classes are imported, a robot is made at once: making one then costs about a
+millisecond, so deferring it would save nothing and only make ``type(robot)`` a surprise."""
 
 _PENDING = "_deferred_request"
 """The one attribute a deferred robot holds (a name no robot attribute uses)."""
@@ -179,7 +185,8 @@ class DeferredRobot:
 
 
 def _answered_or_made(arguments: RobotArguments) -> Any:
-    """A deferred robot when the request has a record, else the robot made now (and recorded)."""
+    """A deferred robot when the request has a record and the model classes are not imported yet;
+    else the robot made now (and its request recorded when it had no record)."""
     if argument_kind(arguments.robot) is not ArgumentKind.NAME:
         return _made_now(arguments)  # a spec file is not a registered name: the registry says so
     given = arguments
@@ -187,9 +194,11 @@ def _answered_or_made(arguments: RobotArguments) -> Any:
         given.robot, given.idn, given.base, given.grippers, given.overrides, (), given.kind
     )
     record = record_of(request)
-    if record is not None:
+    if record is not None and MODEL_CLASSES not in sys.modules:
         return DeferredRobot(_Pending(request, record, arguments))
     robot = _made_now(arguments)
+    if record is not None:
+        return robot
     # Recorded now, under the key its inputs hash to (get_model stores the entry there): nothing
     # here reads MJCF or compiles. The record's own rules decide whether it can be kept.
     robot.entry_key = entry_key(robot.build_inputs())

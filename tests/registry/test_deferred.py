@@ -1,5 +1,7 @@
-"""``assembler.assemble`` and ``create_robot`` of a robot asked for before: answered from the cache
-without importing the schema or reading a spec file, and the robot itself on any other use."""
+"""``assembler.assemble`` and ``create_robot`` of a robot asked for before, in a new process: answered
+from the cache without importing the schema or reading a spec file, and the robot itself on any
+other use. Each script runs twice in new processes sharing one cache: the first makes and records
+the robots, the second is answered from the records."""
 
 from __future__ import annotations
 
@@ -7,21 +9,19 @@ import json
 import os
 import subprocess
 import sys
-from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
-import numpy as np
 import pytest
 
 import assembler
-from assembler.build.service import wait_for_writes
 from assembler.errors import RegistryError
-from assembler.registry.deferred import DeferredRobot
-from tests.conftest import use_private_cache
 
 REPOSITORY = Path(__file__).resolve().parents[2]
 
-USER_SCRIPT = """\
+HEAVY = '("pydantic", "assembler.models", "assembler.spec.schema")'
+
+ANSWERED = f"""\
 import json, sys
 opened = []
 sys.addaudithook(lambda event, args: opened.append(str(args[0])) if event == "open" else None)
@@ -30,23 +30,52 @@ robot = assembler.assemble("Sparrow7", idn=2)
 model = robot.get_model()
 xml = robot.get_xml()
 robot.save(sys.argv[1])
-heavy = [name for name in ("pydantic", "assembler.models", "assembler.spec.schema") if name in sys.modules]
+heavy = [name for name in {HEAVY} if name in sys.modules]
 specs = [path for path in opened if path.endswith((".yaml", ".yml"))]
-print(json.dumps({"heavy": heavy, "specs": specs, "nbody": model.nbody, "xml": len(xml)}))
+print(json.dumps({{"heavy": heavy, "specs": specs, "nbody": model.nbody, "xml": len(xml)}}))
+"""
+
+MADE_ON_USE = f"""\
+import json, sys
+import numpy as np
+import assembler
+robot = assembler.assemble("Sparrow7", idn=1)
+alone = assembler.create_robot("Sparrow7", 3)
+damped = assembler.assemble("Sparrow7", overrides={{"joint_defaults.damping": 0.25}})
+models = [robot.get_model(), alone.get_model(), damped.get_model()]
+deferred = [type(r).__name__ for r in (robot, alone, damped)]
+heavy = [name for name in {HEAVY} if name in sys.modules]
+is_robot = isinstance(robot, assembler.RobotModel)
+still_deferred = type(robot).__name__
+prefix = robot.naming_prefix
+made = type(robot) is assembler.REGISTERED_ROBOTS["Sparrow7"]
+compiled = robot.get_model(cache=False)
+print(json.dumps({{
+    "deferred": deferred,
+    "heavy": heavy,
+    "is_robot": is_robot,
+    "still_deferred": still_deferred,
+    "prefix": prefix,
+    "made": made,
+    "parts": [type(part).__name__ for part in robot.models],
+    "home_key": robot.mjspec.key("home") is not None,
+    "same_model": bool(
+        np.array_equal(compiled.qpos0, models[0].qpos0)
+        and np.array_equal(compiled.key_qpos, models[0].key_qpos)
+        and compiled.nbody == models[0].nbody
+    ),
+    "alone": [alone.naming_prefix, len(alone.models), models[1].nbody < models[0].nbody],
+    "damping": float(models[2].dof_damping[0]),
+    "again": type(assembler.assemble("Sparrow7", idn=1)).__name__,
+}}))
 """
 
 
-@pytest.fixture(autouse=True)
-def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    folder = use_private_cache(tmp_path / "model-cache", monkeypatch)
-    yield folder
-    wait_for_writes()
-
-
-def _run_user_script(output: Path) -> dict[str, object]:
-    environment = {**os.environ, "PYTHONPATH": str(REPOSITORY)}
+def _run(script: str, *arguments: str, cache: Path) -> dict[str, Any]:
+    environment = {**os.environ, "PYTHONPATH": str(REPOSITORY), "ASSEMBLER_CACHE_DIR": str(cache)}
+    environment.pop("ASSEMBLER_NO_CACHE", None)
     done = subprocess.run(
-        [sys.executable, "-c", USER_SCRIPT, str(output)],
+        [sys.executable, "-c", script, *arguments],
         env=environment,
         capture_output=True,
         text=True,
@@ -56,44 +85,26 @@ def _run_user_script(output: Path) -> dict[str, object]:
 
 
 def test_a_robot_asked_for_before_is_answered_without_the_schema_or_any_spec_file(tmp_path: Path) -> None:
-    first = _run_user_script(tmp_path / "first.xml")
-    second = _run_user_script(tmp_path / "second.xml")
+    first = _run(ANSWERED, str(tmp_path / "first.xml"), cache=tmp_path / "cache")
+    second = _run(ANSWERED, str(tmp_path / "second.xml"), cache=tmp_path / "cache")
     assert first["heavy"] and first["specs"]  # the first process read the specs and recorded
     assert second["heavy"] == [] and second["specs"] == []
     assert (second["nbody"], second["xml"]) == (first["nbody"], first["xml"])
     assert (tmp_path / "second.xml").read_bytes() == (tmp_path / "first.xml").read_bytes()
 
 
-def test_a_deferred_robot_becomes_the_robot_it_stands_for_on_any_other_use() -> None:
-    made = assembler.assemble("Sparrow7", idn=1)
-    made.get_model()
-    wait_for_writes()
-    robot = assembler.assemble("Sparrow7", idn=1)
-    assert type(robot) is DeferredRobot
-    model = robot.get_model()
-    sparrow = assembler.REGISTERED_ROBOTS["Sparrow7"]
-    assert isinstance(robot, assembler.RobotModel) and isinstance(robot, sparrow)
-    assert robot.naming_prefix == "robot1_"
-    assert type(robot) is sparrow
-    assert [type(part).__name__ for part in robot.models] == [type(part).__name__ for part in made.models]
-    assert robot.mjspec.key("home") is not None  # the keyframe of the model it handed out
-    compiled = robot.get_model(cache=False)
-    np.testing.assert_array_equal(compiled.qpos0, model.qpos0)
-    np.testing.assert_array_equal(compiled.key_qpos, model.key_qpos)
-    assert compiled.nbody == model.nbody
-
-
-def test_create_robot_and_overrides_are_requests_of_their_own() -> None:
-    overrides = {"joint_defaults.damping": 0.25}
-    for _ in range(2):
-        alone = assembler.create_robot("Sparrow7", 3)
-        damped = assembler.assemble("Sparrow7", overrides=overrides)
-        alone_model, damped_model = alone.get_model(), damped.get_model()
-        wait_for_writes()
-    assert type(alone) is DeferredRobot and type(damped) is DeferredRobot
-    assert alone_model.nbody < damped_model.nbody  # no base, no gripper
-    assert alone.naming_prefix == "robot3_" and alone.models == []
-    assert damped_model.dof_damping[0] == pytest.approx(0.25)
+def test_a_deferred_robot_becomes_the_robot_it_stands_for_on_any_other_use(tmp_path: Path) -> None:
+    first = _run(MADE_ON_USE, cache=tmp_path / "cache")
+    second = _run(MADE_ON_USE, cache=tmp_path / "cache")
+    assert first["deferred"] == ["Sparrow7"] * 3 and first["heavy"]  # made at once, then recorded
+    assert second["deferred"] == ["DeferredRobot"] * 3 and second["heavy"] == []
+    for seen in (first, second):
+        assert seen["is_robot"] and seen["prefix"] == "robot1_" and seen["made"]
+        assert seen["parts"] == ["Pedestal", "PincerGripper"] and seen["home_key"] and seen["same_model"]
+        assert seen["alone"] == ["robot3_", 0, True]  # create_robot: no base, no gripper
+        assert seen["damping"] == pytest.approx(0.25)
+        assert seen["again"] == "Sparrow7"  # the model classes are in use now: made at once
+    assert second["still_deferred"] == "DeferredRobot"  # isinstance asks the class, makes nothing
 
 
 def test_an_unknown_robot_is_an_error_when_assembled() -> None:
