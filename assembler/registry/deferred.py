@@ -161,7 +161,7 @@ class DeferredRobot:
     # Anything else is the real robot's: made on first use, in place.
 
     def __getattr__(self, name: str) -> Any:
-        if name == _PENDING:  # not made through __init__ (copy, pickle): nothing to make it from
+        if _PENDING not in self.__dict__:  # being rebuilt by copy or pickle: its state comes next
             raise AttributeError(name)
         return getattr(_materialise(self), name)
 

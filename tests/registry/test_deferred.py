@@ -36,7 +36,7 @@ print(json.dumps({{"heavy": heavy, "specs": specs, "nbody": model.nbody, "xml": 
 """
 
 MADE_ON_USE = f"""\
-import json, sys
+import copy, json, sys
 import numpy as np
 import assembler
 robot = assembler.assemble("Sparrow7", idn=1)
@@ -44,6 +44,7 @@ alone = assembler.create_robot("Sparrow7", 3)
 damped = assembler.assemble("Sparrow7", overrides={{"joint_defaults.damping": 0.25}})
 models = [robot.get_model(), alone.get_model(), damped.get_model()]
 deferred = [type(r).__name__ for r in (robot, alone, damped)]
+copied = copy.copy(damped)
 heavy = [name for name in {HEAVY} if name in sys.modules]
 is_robot = isinstance(robot, assembler.RobotModel)
 still_deferred = type(robot).__name__
@@ -66,6 +67,7 @@ print(json.dumps({{
     ),
     "alone": [alone.naming_prefix, len(alone.models), models[1].nbody < models[0].nbody],
     "damping": float(models[2].dof_damping[0]),
+    "copied": [copied.get_model().dof_damping[0], copied.naming_prefix],
     "again": type(assembler.assemble("Sparrow7", idn=1)).__name__,
 }}))
 """
@@ -103,6 +105,7 @@ def test_a_deferred_robot_becomes_the_robot_it_stands_for_on_any_other_use(tmp_p
         assert seen["parts"] == ["Pedestal", "PincerGripper"] and seen["home_key"] and seen["same_model"]
         assert seen["alone"] == ["robot3_", 0, True]  # create_robot: no base, no gripper
         assert seen["damping"] == pytest.approx(0.25)
+        assert seen["copied"] == [pytest.approx(0.25), "robot0_"]  # a copy is the same robot
         assert seen["again"] == "Sparrow7"  # the model classes are in use now: made at once
     assert second["still_deferred"] == "DeferredRobot"  # isinstance asks the class, makes nothing
 
