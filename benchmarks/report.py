@@ -80,8 +80,8 @@ def _figure_rows(figures: list[Figure]) -> list[str]:
     for f in figures:
         met = "" if f.met is None else ("yes" if f.met else "**no**")
         rows.append(
-            f"| {f.measure} | {f.subject} | {seconds_text(f.ours)} "
-            f"| {f.reference_name} {seconds_text(f.reference)} "
+            f"| {f.measure} | {f.subject} | {f.amount(f.ours)} "
+            f"| {f.reference_name} {f.amount(f.reference)} "
             f"| {f.ratio:.2f}x | {f.target} | {met} | {f.note} |"
         )
     return rows
@@ -96,7 +96,8 @@ EXPLANATIONS = [
     "  (first contact), against `import mujoco; MjModel.from_xml_path(robosuite's XML file)`.",
     "- *2 warm*: the cache holds the robot: `assembler.load_model(name)`, and `assemble(name)` followed by",
     "  `get_model()`, `get_xml()` or `save(file)` (all answered from the request record, no spec read),",
-    "  against `import mujoco; MjModel.from_binary_path(entry)`.",
+    "  against `import mujoco; MjModel.from_binary_path(entry)`; the rows marked *instructions* count",
+    "  the instructions each whole process executes (valgrind's callgrind), which the load does not change.",
     "- *3 start-up*: `python -c 'import assembler'` minus `python -c 'import mujoco'`; `assembler --help`",
     "  minus `python -c pass` (absolute seconds against the target).",
     "- *4 get_xml*: warm in-process `assemble(name).get_xml()` against robosuite creating the robot and",

@@ -59,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[Figure], list[str]]:
-    from benchmarks import environments, fresh, in_process, variants, whole
+    from benchmarks import environments, fresh, in_process, instructions, variants, whole
     from benchmarks.references import own_robots, robosuite_installed, robosuite_robots
     from tests.parity.robosuite_side import robosuite_xml
 
@@ -116,6 +116,9 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
     for name in own:
         guarded(name, lambda name=name: whole.warm(name, scratch, repeats, False))
     xml_robots = [n for n in robosuite if n in XML_ROBOTS] or own[:1]
+    if not quick and xml_robots and instructions.available():  # the warm figures, load-independent
+        counted = xml_robots[0]
+        guarded(counted, lambda: instructions.warm(counted, whole.warm_cache(counted, scratch)))
     for name in xml_robots:
         guarded(name, lambda name=name: xml_figures(name))
     if robosuite:
