@@ -18,7 +18,7 @@ import sys
 from benchmarks.figures import Figure, ratio_figure
 from benchmarks.processes import environment
 from benchmarks.timing import REPOSITORY
-from benchmarks.whole import WARM_FLOOR_TARGET, entry_path
+from benchmarks.whole import entry_path
 
 _COLLECTED = re.compile(r"Collected : (\d+)")
 
@@ -60,8 +60,10 @@ def warm(name: str, env: dict[str, str]) -> list[Figure]:
             count(code, env),
             "MuJoCo .mjb load, whole process",
             floor,
-            WARM_FLOOR_TARGET,
-            "callgrind: instructions of the whole process, load-independent",
+            None,
+            "callgrind, whole process; no target: the floor's time is mostly reading and zeroing "
+            "memory (few instructions), ours adds Python imports (many), so this ratio runs above "
+            "the time ratio; compare it between runs and commits",
             unit="instructions",
         )
         for subject, code in cases.items()
