@@ -61,9 +61,8 @@ def warm(name: str, env: dict[str, str]) -> list[Figure]:
             "MuJoCo .mjb load, whole process",
             floor,
             None,
-            "callgrind, whole process; no target: the floor's time is mostly reading and zeroing "
-            "memory (few instructions), ours adds Python imports (many), so this ratio runs above "
-            "the time ratio; compare it between runs and commits",
+            "callgrind, whole process; no target: instructions are not time (a big model's load "
+            "spends its time in memory traffic that counts few instructions); compare between runs",
             unit="instructions",
         )
         for subject, code in cases.items()

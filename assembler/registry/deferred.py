@@ -116,7 +116,7 @@ def _materialise(robot: DeferredRobot) -> Any:
         cls.__init__(robot, idn=arguments.idn)  # as cls(idn=...) does, on this object
         if arguments.kind == ASSEMBLE:
             instances.equip(robot, arguments.base, arguments.grippers)
-    except BaseException:  # a spec file changed since the record was read: stay deferred, say why
+    except BaseException:  # a spec file changed since the record was read: stay as it was, raise
         robot.__dict__.clear()
         _SET_CLASS(robot, DeferredRobot)
         robot.__dict__[_PENDING] = pending
