@@ -61,8 +61,8 @@ def warm(name: str, env: dict[str, str]) -> list[Figure]:
             "MuJoCo .mjb load, whole process",
             floor,
             None,
-            "callgrind, whole process; no target: instructions are not time (a big model's load "
-            "spends its time in memory traffic that counts few instructions); compare between runs",
+            "callgrind, whole process; no target: instructions are not time (memory-bound work counts "
+            "few of them), a load-independent figure to compare between runs and commits",
             unit="instructions",
         )
         for subject, code in cases.items()
