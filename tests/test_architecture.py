@@ -102,6 +102,8 @@ DEFERRED = {
     ("assembler.cli", "assembler.cli.quick_build"): "a cached build is answered before the commands load",
     ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
     ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
+    ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
+    ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",
     (
         "assembler.robosuite",
         "assembler.robosuite.bridge",
