@@ -13,7 +13,7 @@ from collections.abc import Callable, Sequence
 import mujoco
 import numpy as np
 
-from assembler.cache.entry import content_digest
+from assembler.cache.file_state import buffer_digest
 from assembler.spec.documents import Override
 from assembler.models import RobotModel
 
@@ -22,7 +22,7 @@ def model_digest(model: mujoco.MjModel) -> str:
     """A digest of everything in a compiled model (MuJoCo's own binary form of it)."""
     buffer = np.empty(mujoco.mj_sizeModel(model), dtype=np.uint8)
     mujoco.mj_saveModel(model, None, buffer)
-    return content_digest(buffer)
+    return buffer_digest(buffer)
 
 
 def overrides_without_effect(

@@ -6,7 +6,7 @@ reader sees a whole file or none, whichever processes write at once:
 
 - ``<size>-<key>.msh``, an entry: the ``.msh`` bytes (:mod:`assembler.cache.mesh_data`) behind a
   magic word and a BLAKE2b digest of the key and the bytes. The key is a digest of the source
-  file's BLAKE2b (:func:`assembler.cache.dependencies.content_digest`), its decoder and MuJoCo's
+  file's digest (:func:`assembler.cache.file_state.file_digest`), its decoder and MuJoCo's
   version: the same content anywhere on disk is one entry, and another MuJoCo decodes again. The
   source's size in the name lets a lookup skip hashing a file no entry can match (a new mesh). An entry that
   fails its digest (a flipped byte, a truncated write) is a miss and is removed, never a wrong
@@ -35,10 +35,10 @@ from pathlib import Path
 
 import mujoco
 
-from assembler.cache.dependencies import RECENT_NS, content_digest
+from assembler.cache.file_state import Stat, file_digest, settled, stat_of
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 
-FORMAT = 1
+FORMAT = 2
 """Version of the entry and record layout; part of every key."""
 
 MESH_SHARE = 4
@@ -53,22 +53,6 @@ GRACE_SECONDS = 600.0
 
 _OWN_FILE = re.compile(r"^\.?(\d+-[0-9a-f]{40}\.(msh|claim)|[0-9a-f]{40}\.src)(\.\w+\.tmp)?$")
 _ENTRY = re.compile(r"^(\d+)-[0-9a-f]{40}\.msh$")
-
-Stat = tuple[int, int, int, int]
-"""(size, mtime_ns, ctime_ns, inode): what says a file is unchanged."""
-
-
-def file_stat(path: str) -> Stat:
-    """The stat fields the store trusts; raises OSError."""
-    stat = os.stat(path)
-    return (stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino)
-
-
-def settled(stat: Stat) -> bool:
-    """True when the file was last modified a few seconds ago or more (dependencies.RECENT_NS):
-    only then can an unchanged stat vouch for unchanged content, as a later write within the same
-    clock tick cannot go unseen. A write after an old modification time moves it to now."""
-    return stat[1] < time.time_ns() - RECENT_NS
 
 
 def _check(*parts: bytes) -> bytes:
@@ -140,22 +124,22 @@ class MeshStore:
         record["check"] = _check(json.dumps(fields).encode()).hex()
         self._write(self._record_name(path), json.dumps(record).encode())
 
-    def known_digest(self, path: str, stat: os.stat_result) -> str | None:
-        """The digest recorded for ``path`` in the state ``stat`` describes, if any (no hashing)."""
-        if not settled((stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino)):
+    def known_digest(self, path: str, stat: Stat) -> str | None:
+        """The digest recorded for ``path`` in the state ``stat``, if any (no hashing)."""
+        if not settled(stat):
             return None
-        return self.recorded(path, (stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino))
+        return self.recorded(path, stat)
 
     def digest(self, path: str) -> tuple[str, Stat] | None:
         """``path``'s digest and stat, from its record or by hashing it (and recording that);
         None when the file cannot be read or changes while it is hashed."""
         try:
-            stat = file_stat(path)
+            stat = stat_of(path)
             found = self.recorded(path, stat)
             if found is not None:
                 return found, stat
-            digest = content_digest(path)
-            if file_stat(path) != stat:
+            digest = file_digest(path)
+            if stat_of(path) != stat:
                 return None
         except OSError:
             return None

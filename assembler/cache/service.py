@@ -29,6 +29,7 @@ from assembler.cache.requests import default_request_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import CacheInfo, ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
+from assembler.files.inputs import note_inputs
 from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
 
 
@@ -128,6 +129,13 @@ def _recorder(assembly: Assembly) -> Recorder:
     return Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files, known)
 
 
+def _built(build: Callable[[], Assembly]) -> Assembly:
+    """``build()``, its files noted as inputs no output may be written over."""
+    assembly = build()
+    note_inputs([*assembly.read_files, *asset_files(assembly.mjspec)])
+    return assembly
+
+
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
     decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
@@ -147,14 +155,14 @@ def compile_model(
     key = cache_key(inputs) if cache and not cache_disabled() else None
     if key is None:
         counts.bypassed += 1
-        return compile_assembly(build(), meshes=cache)
+        return compile_assembly(_built(build), meshes=cache)
     keep = store
     models = default_store()
     model = load_entry(key)
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
-    assembly = build()
+    assembly = _built(build)
     recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
     if keep:
@@ -182,7 +190,7 @@ def compile_xml(
     key = cache_key(inputs) if cache and not cache_disabled() else None
     if key is None:
         counts.bypassed += 1
-        assembly = build()
+        assembly = _built(build)
         model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache and meshes)
         return CompiledModel(model, Keyframe.of(model)), xml
     models = default_store()
@@ -192,7 +200,7 @@ def compile_xml(
         counts.hits += 1
         return None, stored
     counts.misses += 1
-    assembly = build()
+    assembly = _built(build)
     recorder = _recorder(assembly)
     model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
     if store:

@@ -11,8 +11,11 @@ point the cache elsewhere or switch it off by setting a variable:
 
 from __future__ import annotations
 
+import atexit
 import os
 import re
+import shutil
+import tempfile
 from pathlib import Path
 
 from assembler.errors import AssemblerError
@@ -36,6 +39,25 @@ def cache_dir() -> Path:
     xdg = os.environ.get("XDG_CACHE_HOME")
     root = Path(xdg).expanduser() if xdg else Path.home() / ".cache"
     return root / "robot-assembler"
+
+
+_scratch: list[Path] = []
+
+
+def scratch_dir() -> Path:
+    """A folder of this process's own, removed at its exit: where files the cache would keep (a
+    converted mesh, a robosuite part file) go when the cache is off or cannot be written."""
+    if not _scratch:
+        folder = Path(tempfile.mkdtemp(prefix="robot-assembler-"))
+        atexit.register(shutil.rmtree, folder, True)
+        _scratch.append(folder)
+    return _scratch[0]
+
+
+def volatile_folders() -> list[Path]:
+    """Folders whose files may vanish (the cache folder, the scratch folder): a written model never
+    names a file in them."""
+    return [cache_dir(), *_scratch]
 
 
 def cache_disabled() -> bool:

@@ -31,7 +31,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.dependencies import Dependency, Recorder, verify
-from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry, content_digest
+from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry
+from assembler.cache.file_state import buffer_digest
+from assembler.files.inputs import note_inputs
 from assembler.mjcf import mujoco_warnings
 
 TEMP_SUFFIX = ".tmp"
@@ -131,7 +133,7 @@ class ModelStore:
                 if os.fstat(stream.fileno()).st_size != entry.model_bytes:
                     return None
                 with mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ) as content:
-                    if content_digest(content) != entry.digest:
+                    if buffer_digest(content) != entry.digest:
                         return None
                 with mujoco_warnings.collected() as warned:
                     model = mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
@@ -147,6 +149,7 @@ class ModelStore:
         current = verify(entry.dependencies)
         if current is None:
             return None  # an input changed: the caller compiles and replaces the entry
+        note_inputs(state.path for state in current)
         model = self._open_model(entry)
         if model is None:
             self._discard(entry)
@@ -163,11 +166,13 @@ class ModelStore:
         from is unchanged and the XML file is whole (else it is removed: a miss). The model file
         is not read: the XML does not need it."""
         entry = self._read_entry(key)
-        if entry is None or not entry.xml or verify(entry.dependencies) is None:
+        current = verify(entry.dependencies) if entry is not None and entry.xml else None
+        if entry is None or current is None:
             return None
+        note_inputs(state.path for state in current)
         try:
             data = (self.directory / entry.xml).read_bytes()
-            if len(data) == entry.xml_bytes and content_digest(data) == entry.xml_digest:
+            if len(data) == entry.xml_bytes and buffer_digest(data) == entry.xml_digest:
                 with contextlib.suppress(OSError):
                     self._touch(entry.manifest)
                 return data.decode("utf-8")
@@ -249,7 +254,7 @@ class ModelStore:
             key=key,
             model=f"{key}-{secrets.token_hex(6)}{MODEL_SUFFIX}",
             model_bytes=buffer.size,
-            digest=content_digest(buffer),
+            digest=buffer_digest(buffer),
             label=label,
             dependencies=(),
         )
@@ -369,4 +374,4 @@ class ModelStore:
 
 def _with_xml(entry: Entry, name: str, data: bytes) -> Entry:
     """``entry`` naming ``name`` as its XML file, whose content is ``data``."""
-    return replace(entry, xml=name, xml_bytes=len(data), xml_digest=content_digest(data))
+    return replace(entry, xml=name, xml_bytes=len(data), xml_digest=buffer_digest(data))

@@ -163,6 +163,7 @@ def test_a_bundle_writes_only_plain_names_inside_its_folder(tmp_path: Path) -> N
     assert main(["build", str(robot / "strange.yaml"), "--bundle", str(tmp_path / "bundle")]) == 0
     written = sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*") if p.is_file())
     assert written == [
+        "bundle/.assembler-bundle.json",  # the bundle's record of its own files
         "bundle/Strange.xml",
         "bundle/assets/hidden.obj",
         "bundle/assets/tetra.obj",
