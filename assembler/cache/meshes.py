@@ -36,22 +36,15 @@ from pathlib import Path
 import mujoco
 
 from assembler.cache.file_state import Stat, file_digest, settled, stat_of
+from assembler.cache.folder import GRACE_SECONDS, MESH_FILE
+from assembler.cache.folder import evict as evict_folder
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 
 FORMAT = 2
 """Version of the entry and record layout; part of every key."""
 
-MESH_SHARE = 4
-"""The mesh store may use 1/4 of ``ASSEMBLER_CACHE_MAX_BYTES`` (512 MiB by default): every mesh of
-robosuite's 19 robots, 16 grippers and 10 bases takes 109 MB as ``.msh``, and one entry serves
-every model that uses the file, so meshes need far less room than compiled models."""
-
 MAGIC = b"ASMMSH1\n"
 CHECK_BYTES = 32
-GRACE_SECONDS = 600.0
-"""Temporary files and claims younger than this may belong to a writer still at work."""
-
-_OWN_FILE = re.compile(r"^\.?(\d+-[0-9a-f]{40}\.(msh|claim)|[0-9a-f]{40}\.src)(\.\w+\.tmp)?$")
 _ENTRY = re.compile(r"^(\d+)-[0-9a-f]{40}\.msh$")
 
 
@@ -227,7 +220,7 @@ class MeshStore:
         try:
             with os.scandir(self.directory) as entries:
                 for item in entries:
-                    if _OWN_FILE.match(item.name):
+                    if MESH_FILE.match(item.name):
                         with contextlib.suppress(OSError):
                             stat = item.stat()
                             found.append((stat.st_mtime_ns, item.name, stat.st_size))
@@ -236,22 +229,13 @@ class MeshStore:
         return found
 
     def evict(self) -> None:
-        """Remove stale temporary files and claims, then the least recently used entries and
-        records until the folder fits in ``max_bytes``."""
+        """Remove stale temporary files and claims, then the least recently used parts of the whole
+        cache folder (this folder's parent, :mod:`assembler.cache.folder`) until it fits ``max_bytes``."""
         stale = time.time_ns() - int(GRACE_SECONDS * 1e9)
-        kept = []
-        for used, name, size in self._files():
-            if name.endswith((".tmp", ".claim")):
-                if used < stale:
-                    self._remove(name)
-            else:
-                kept.append((used, name, size))
-        total = sum(size for _, _, size in kept)
-        for _, name, size in sorted(kept):
-            if total <= self.max_bytes:
-                break
-            self._remove(name)
-            total -= size
+        for used, name, _ in self._files():
+            if name.endswith((".tmp", ".claim")) and used < stale:
+                self._remove(name)
+        evict_folder(self.directory.parent, self.max_bytes)
 
     def info(self) -> MeshStoreInfo:
         """What the folder holds now."""
@@ -267,8 +251,8 @@ class MeshStore:
 
 
 def default_mesh_store() -> MeshStore | None:
-    """The store the environment points at (``meshes/`` in the cache folder, a quarter of the
-    cache's bound), or None when the cache is off."""
+    """The store the environment points at (``meshes/`` in the cache folder, under the cache's one
+    bound), or None when the cache is off."""
     if cache_disabled():
         return None
-    return MeshStore(cache_dir() / "meshes", max_bytes() // MESH_SHARE)
+    return MeshStore(cache_dir() / "meshes", max_bytes())

@@ -34,8 +34,9 @@ from typing import Any
 import mujoco
 
 from assembler.cache.dependencies import Dependency, verify
+from assembler.cache.folder import evict as evict_folder
 from assembler.cache.key import code_fingerprint, resolution_environment
-from assembler.cache.settings import cache_dir
+from assembler.cache.settings import cache_dir, max_bytes
 from assembler.files.inputs import note_inputs
 
 FORMAT = 1
@@ -205,14 +206,7 @@ class RequestStore:
             return
         for _, path in sorted(records)[: max(0, len(records) - self.max_records)]:
             path.unlink(missing_ok=True)
-
-    def clear(self) -> None:
-        """Remove every record."""
-        with contextlib.suppress(OSError), os.scandir(self.directory) as entries:
-            for item in entries:
-                if item.name.endswith((".json", ".tmp")):
-                    with contextlib.suppress(OSError):
-                        os.unlink(item.path)
+        evict_folder(self.directory.parent, max_bytes())
 
 
 def default_request_store() -> RequestStore:

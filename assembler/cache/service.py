@@ -20,14 +20,15 @@ import mujoco
 
 from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.cache.emission import compile_and_emit
+from assembler.cache.folder import FolderInfo
+from assembler.cache.folder import clear as clear_folder
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
 from assembler.cache.mesh_swap import compile_from_store, wait_for_fillers
-from assembler.cache.meshes import MESH_SHARE, default_mesh_store
-from assembler.cache.requests import default_request_store
+from assembler.cache.meshes import default_mesh_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
-from assembler.cache.store import CacheInfo, ModelStore
+from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
 from assembler.files.inputs import note_inputs
 from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
@@ -81,23 +82,17 @@ _recent = RecentModels()
 
 
 def default_store() -> ModelStore:
-    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``):
-    compiled models get the bound less the mesh store's share."""
-    bound = max_bytes()
-    return ModelStore(cache_dir(), bound - bound // MESH_SHARE)
+    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``;
+    the bound is the whole cache folder's, :mod:`assembler.cache.folder`)."""
+    return ModelStore(cache_dir(), max_bytes())
 
 
-def clear(store: ModelStore) -> CacheInfo:
-    """Empty ``store`` and the mesh store beside it, and forget the models this process kept from
-    it; returns what the model store held (and what could not be removed)."""
+def clear(store: ModelStore) -> FolderInfo:
+    """Empty the cache folder of ``store`` (every part: models, meshes, request records, converted
+    meshes, robosuite part files) and forget the models this process kept from it; returns what it
+    held (and what could not be removed)."""
     _recent.forget(str(store.directory))
-    meshes = default_mesh_store()
-    if meshes is not None and meshes.directory.parent == store.directory:
-        meshes.clear()
-    requests = default_request_store()
-    if requests.directory.parent == store.directory:
-        requests.clear()
-    return store.clear()
+    return clear_folder(store.directory)
 
 
 def wait_for_writes() -> None:

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 from assembler.build.override_effects import overrides_without_effect
 from assembler.errors import AssemblerError
+from assembler.files.inputs import note_inputs
 from assembler.files.paths import is_file
 from assembler.models import RobotModel
 from assembler.registry.catalog import register_specs
@@ -59,7 +60,16 @@ def assembled(args: argparse.Namespace, overrides: Sequence[Override] | None = N
         arms = getattr(robot_class(name).spec, "arms", ())
         grippers = {arm: None for arm in arms}
     changes = override_flags(args) if overrides is None else overrides
-    return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
+    robot = assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
+    note_inputs(spec_files(robot))
+    return robot
+
+
+def spec_files(robot: RobotModel) -> list[str]:
+    """Every spec file the robot, its base and grippers were made from (parents included)."""
+    parts = [type(robot), *(type(part) for part in robot.models)]
+    documents = [getattr(getattr(part, "loaded", None), "document", None) for part in parts]
+    return [origin[0] for document in documents for origin in getattr(document, "origins", ())]
 
 
 def idle_override_warnings(args: argparse.Namespace) -> list[str]:

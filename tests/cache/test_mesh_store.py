@@ -537,7 +537,7 @@ def test_the_background_filler_stores_what_a_compile_met_and_ignores_the_working
     assert not (tmp_path / "decoy-ran").exists()
     store = default_mesh_store()
     assert store is not None and store.directory == tmp_path / "cache" / "meshes"
-    assert store.max_bytes == 512 * 1024**2
+    assert store.max_bytes == 2 * 1024**3  # the cache folder's one bound
     assert compile_with_store(mesh_spec(files), store)[1] == [str(file) for file in files]
 
 
