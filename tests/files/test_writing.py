@@ -164,7 +164,9 @@ def test_building_onto_its_own_earlier_output_replaces_it(tmp_path: Path) -> Non
     ]
 
 
-def test_a_bundle_never_replaces_a_file_no_bundle_wrote(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_a_bundle_never_replaces_a_file_no_bundle_wrote(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     mine = tmp_path / "out" / "assets" / "tet.obj"
     mine.parent.mkdir(parents=True)
     mine.write_text("my own file\n")
@@ -174,7 +176,9 @@ def test_a_bundle_never_replaces_a_file_no_bundle_wrote(tmp_path: Path, capsys: 
     assert sorted(p.name for p in (tmp_path / "out").rglob("*")) == ["assets", "tet.obj"]  # nothing written
 
 
-def test_a_bundle_never_replaces_an_xml_no_bundle_wrote(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_a_bundle_never_replaces_an_xml_no_bundle_wrote(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     (tmp_path / "out").mkdir()
     (tmp_path / "out" / "WriteArm.xml").write_text("notes\n")
     assert build("--bundle", "out") == 1
