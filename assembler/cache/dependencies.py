@@ -15,6 +15,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 import mujoco
 
 from assembler.cache.file_state import GRANULARITY_NS, FileState, Stat, check_all, stat_of, state_of
+from assembler.files.inputs import written_as
 
 Dependency = FileState
 """One input file of a compile, as it was when the compile read it."""
@@ -48,8 +49,10 @@ class Recorder:
         self._recent = time.time_ns() - RECENT_NS
         self._earlier = dict(read_earlier or {})
         self._stats: dict[str, Stat] | None = {}
+        read = set(paths) | set(self._earlier)
+        read |= {link for path in read for link in written_as(path)}  # links on the way, checked too
         try:
-            for path in sorted(set(paths) | set(self._earlier)):
+            for path in sorted(read):
                 self._stats[path] = stat_of(path)
         except OSError:
             self._stats = None  # a missing file: the compile will say so

@@ -12,6 +12,7 @@ from __future__ import annotations
 import importlib
 from collections.abc import Sequence
 
+from assembler.cache.settings import switched_off
 from assembler.cli.arguments import build_parser, parse
 from assembler.cli.endings import end_cleanly
 
@@ -23,11 +24,12 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     def command() -> int:
         args = parse(argv)
-        if args.command == "build":  # a build made before is answered before any spec is read
-            answered = importlib.import_module("assembler.cli.quick_build").answer(args)
-            if answered is not None:
-                return int(answered)
-        dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
-        return int(dispatch.run_command(args))
+        with switched_off(bool(getattr(args, "no_cache", False))):
+            if args.command == "build":  # a build made before is answered before any spec is read
+                answered = importlib.import_module("assembler.cli.quick_build").answer(args)
+                if answered is not None:
+                    return int(answered)
+            dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
+            return int(dispatch.run_command(args))
 
     return end_cleanly(command)

@@ -15,6 +15,22 @@ from collections.abc import Iterable
 _read: dict[tuple[int, int], str] = {}
 """(device, inode) -> the path it was read under."""
 
+_written_as: dict[str, set[str]] = {}
+"""A resolved path -> the paths, as written, that led to it through a symbolic link."""
+
+
+def note_resolution(written: str | os.PathLike[str], resolved: str | os.PathLike[str]) -> None:
+    """Remember that ``written`` (absolute, links not followed) led to ``resolved``: a record of
+    what was read then keeps both, so a link re-pointed later is seen (:mod:`assembler.cache.file_state`)."""
+    shown, target = os.path.abspath(written), os.fspath(resolved)
+    if shown != target:
+        _written_as.setdefault(target, set()).add(shown)
+
+
+def written_as(resolved: str) -> set[str]:
+    """The paths, as written, that led to ``resolved`` through a link (none when it was read directly)."""
+    return _written_as.get(resolved, set())
+
 
 def note_inputs(paths: Iterable[str | os.PathLike[str]]) -> None:
     """Remember ``paths`` as inputs of what this process builds (a path that cannot be read is skipped:
