@@ -16,8 +16,8 @@ from assembler.cli.quick_build import build_request, robot_file, write_xml
 def run(args: argparse.Namespace) -> int:
     robot = assembled(args)
     xml = robot.get_xml(cache=use_cache(args))  # compiled first: a robot that does not compile writes nothing
+    notes = idle_override_warnings(args)  # every --set checked before anything is written
     write_xml(args, xml, type(robot).__name__)
-    notes = idle_override_warnings(args)
     for note in notes:
         print(note, file=sys.stderr)
     request = build_request(args)
