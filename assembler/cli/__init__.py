@@ -12,7 +12,6 @@ from __future__ import annotations
 import importlib
 from collections.abc import Sequence
 
-from assembler.cache.settings import switched_off
 from assembler.cli.arguments import build_parser, parse
 from assembler.cli.endings import end_cleanly
 
@@ -24,7 +23,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     def command() -> int:
         args = parse(argv)
-        with switched_off(bool(getattr(args, "no_cache", False))):
+        settings = importlib.import_module("assembler.cache.settings")  # imports MuJoCo: inside the ending
+        with settings.switched_off(bool(getattr(args, "no_cache", False))):
             if args.command == "build":  # a build made before is answered before any spec is read
                 answered = importlib.import_module("assembler.cli.quick_build").answer(args)
                 if answered is not None:
