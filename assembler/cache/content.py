@@ -18,13 +18,16 @@ from the cache.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import re
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
+from dataclasses import asdict
 from pathlib import Path
 
-from assembler.cache.file_state import buffer_digest, file_digest
+from assembler.cache.dependencies import Recorder
+from assembler.cache.file_state import FileState, buffer_digest, check_all, file_digest
 from assembler.cache.settings import cache_dir, cache_disabled, scratch_dir
 
 CONVERTED = "converted-meshes"
@@ -96,15 +99,45 @@ def text_file(folder: Path, text: str, suffix: str) -> Path:
     target = folder / f"text-{buffer_digest(data)}{suffix}"
     if target.exists() and _whole(target):
         return target
-    temporary = _temporary(folder, suffix)
-    try:
-        temporary.write_bytes(data)
-        os.replace(temporary, target)
-    finally:
-        temporary.unlink(missing_ok=True)
+    _write_whole(target, data)
     return target
 
 
 def glob_escape(text: str) -> str:
     """``text`` with the characters ``glob`` treats as patterns escaped."""
     return re.sub(r"([*?\[])", r"[\1]", text)
+
+
+def _write_whole(target: Path, data: bytes) -> None:
+    temporary = _temporary(target.parent, target.suffix)
+    try:
+        temporary.write_bytes(data)
+        os.replace(temporary, target)
+    finally:
+        temporary.unlink(missing_ok=True)
+
+
+def recorded_text_file(
+    folder: Path, key: str, read: Iterable[str], emit: Callable[[], str], suffix: str
+) -> Path:
+    """The file of the text ``emit()`` makes for ``key`` (a digest of everything that decides the
+    text but the files it reads), kept across processes: when the record of ``key`` finds every file
+    in ``read`` unchanged (:func:`~assembler.cache.file_state.check_all`) and its text file whole,
+    nothing is emitted or written. Otherwise the text is emitted, written (:func:`text_file`) and
+    recorded with the files' states; a file changed meanwhile means no record."""
+    record = folder / f"record-{key}.json"
+    with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
+        data = json.loads(record.read_text(encoding="utf-8"))
+        states = [FileState(**state) for state in data["read"]]
+        target = folder / str(data["file"])
+        if target.parent == folder and check_all(states) is not None and target.exists() and _whole(target):
+            return target
+    files = list(read)
+    recorder = Recorder(files)
+    target = text_file(folder, emit(), suffix)
+    recorded = recorder.result()
+    if recorded is not None:
+        text = json.dumps({"file": target.name, "read": [asdict(state) for state in recorded]})
+        with contextlib.suppress(OSError):
+            _write_whole(record, text.encode("utf-8"))
+    return target

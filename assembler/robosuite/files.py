@@ -5,9 +5,33 @@ is made again, never simulated. With the cache off they go to a folder of the pr
 
 from __future__ import annotations
 
-from assembler.cache.content import PARTS, content_folder, text_file
+import dataclasses
+import json
+from collections.abc import Callable, Iterable
+
+import mujoco
+
+from assembler.cache.content import PARTS, content_folder, recorded_text_file, text_file
+from assembler.cache.file_state import buffer_digest
+from assembler.cache.key import FORMAT, code_fingerprint, resolution_environment
 
 
 def written_file(text: str) -> str:
     """The path of a file holding ``text`` (written only when no whole one is there)."""
     return str(text_file(content_folder(PARTS), text, ".xml"))
+
+
+def kept_file(inputs: object, read: Iterable[str], emit: Callable[[], str]) -> str:
+    """The part file of ``inputs`` (a part's or an assembly's build inputs, plain frozen data), kept
+    across processes: found by a key of the inputs, the assembler's code, MuJoCo's version and the
+    resolution environment, and served without ``emit()`` while the files in ``read`` (its MJCF and
+    includes) are unchanged and the file is whole."""
+    material = {
+        "format": FORMAT,
+        "assembler": code_fingerprint(),
+        "mujoco": mujoco.__version__,
+        "environment": resolution_environment(),
+        "inputs": dataclasses.asdict(inputs) if dataclasses.is_dataclass(inputs) else repr(inputs),  # type: ignore[arg-type]
+    }
+    key = buffer_digest(json.dumps(material, sort_keys=True, default=repr).encode())
+    return str(recorded_text_file(content_folder(PARTS), key, read, emit, ".xml"))

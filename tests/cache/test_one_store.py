@@ -27,7 +27,7 @@ from assembler import cache
 from assembler.cache import wait_for_writes
 from assembler.cache.content import PARTS, content_folder
 from assembler.cli import main
-from assembler.robosuite.files import written_file
+from assembler.robosuite.files import kept_file, written_file
 from assembler.urdf.meshes import converted_dir, importable
 from tests.conftest import use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
@@ -292,3 +292,25 @@ def test_the_bound_clear_and_info_count_every_part(
     capsys.readouterr()
     assert main(["cache", "clear"]) == 0
     assert [p for p in (tmp_path / "cache").rglob("*") if p.is_file()] == []
+
+
+def test_a_kept_part_file_is_served_without_emitting_while_its_files_are_unchanged(folder: Path) -> None:
+    emitted: list[str] = []
+
+    def emit() -> str:
+        text = f'<mujoco model="part">{(folder / "arm.xml").read_text()[:40]!r}</mujoco>\n'
+        emitted.append(text)
+        return text
+
+    inputs = cache.PartInputs("robot", ("StoreArm",), "{}", str(folder / "arm.xml"), "0")
+    path = Path(kept_file(inputs, [str(folder / "arm.xml")], emit))
+    assert path.parent == folder / "cache" / PARTS and len(emitted) == 1
+    stamp = path.stat().st_mtime_ns
+    assert Path(kept_file(inputs, [str(folder / "arm.xml")], emit)) == path and len(emitted) == 1
+    assert path.stat().st_mtime_ns == stamp  # a warm use emits and writes nothing
+    path.write_text(path.read_text().replace("part", "edit"))  # the part file edited in the cache
+    assert Path(kept_file(inputs, [str(folder / "arm.xml")], emit)).read_text() == emitted[0]
+    assert len(emitted) == 2
+    edit_keeping_size_and_times(folder / "arm.xml", '"arm"', '"ARM"')  # its MJCF edited, touch -r
+    assert "ARM" in Path(kept_file(inputs, [str(folder / "arm.xml")], emit)).read_text()
+    assert len(emitted) == 3
