@@ -9,9 +9,11 @@ inode. A state taken while the file's times were too close to the moment it was 
 *racy*: a later write within the same clock tick could leave every field equal, so such a file is
 always hashed again (git's rule), and the refreshed state is no longer racy.
 
-A path is recorded with where it leads (``os.path.realpath``): a symbolic link re-pointed (the
-file's own or one of its folders') leads elsewhere and is a change even when the new target's
-stat looks the same.
+A path is recorded with where it leads (``os.path.realpath``): a path through a symbolic link (the
+file's own or one of its folders') is resolved again on every check, and leading elsewhere is a
+change even when the new target's stat looks the same. A path without a link is not resolved again
+(resolving costs a system call per folder of the path, 20 times the stat): whatever is put in its
+place later, a link included, is another inode, so it is hashed again and compared.
 """
 
 from __future__ import annotations
@@ -116,7 +118,9 @@ def check(state: FileState) -> FileState | None:
     when only its stat changed (the content hashed again is equal), None when it changed, moved
     elsewhere through a link or cannot be read."""
     try:
-        if os.path.realpath(state.path) != state.target:
+        # Only a path that led elsewhere is resolved again (a link on it may be re-pointed): for any
+        # other, the file found there now is another inode if anything was put in its place.
+        if state.target != state.path and os.path.realpath(state.path) != state.target:
             return None
         now = stat_of(state.path)
         if now == state.stat and not state.racy:
