@@ -11,7 +11,7 @@ from collections.abc import Callable
 import mujoco
 
 import assembler
-from assembler import cache
+from assembler.build import service
 from benchmarks.figures import Figure, ratio_figure
 from benchmarks.timing import interleaved
 
@@ -23,7 +23,7 @@ def get_xml(name: str, robosuite: bool, repeats: int) -> list[Figure]:
     """``assemble(name).get_xml()`` with the XML in the cache, against robosuite creating the robot
     and calling its ``get_xml`` (our own robots: against MuJoCo parsing our XML; no target)."""
     xml = assembler.assemble(name).get_xml()
-    cache.wait_for_writes()
+    service.wait_for_writes()
     reference: Callable[[], object]
     if robosuite:
         from tests.parity.robosuite_side import robosuite_xml
@@ -31,9 +31,9 @@ def get_xml(name: str, robosuite: bool, repeats: int) -> list[Figure]:
         reference, reference_name = (lambda: robosuite_xml(name)), "robosuite create + get_xml"
     else:
         reference, reference_name = (lambda: mujoco.MjSpec.from_string(xml)), "MuJoCo parse of our XML"
-    hits = cache.counts.hits
+    hits = service.counts.hits
     times = interleaved({"ours": lambda: assembler.assemble(name).get_xml(), "reference": reference}, repeats)
-    note = "from the cache" if cache.counts.hits > hits else "NOT from the cache"
+    note = "from the cache" if service.counts.hits > hits else "NOT from the cache"
     target = XML_TARGET if robosuite else None
     return [
         ratio_figure(
@@ -47,9 +47,9 @@ def repeated(name: str, repeats: int) -> list[Figure]:
     the same XML with its asset cache warm, and against ``copy.copy`` of a model."""
     robot = assembler.assemble(name)
     model = robot.get_model()
-    cache.wait_for_writes()
+    service.wait_for_writes()
     xml = robot.get_xml()
-    hits = cache.counts.hits
+    hits = service.counts.hits
     times = interleaved(
         {
             "ours": lambda: assembler.assemble(name).get_model(),
@@ -58,7 +58,7 @@ def repeated(name: str, repeats: int) -> list[Figure]:
         },
         repeats,
     )
-    note = "" if cache.counts.hits > hits else "no cache hit: assembler code changed meanwhile?"
+    note = "" if service.counts.hits > hits else "no cache hit: assembler code changed meanwhile?"
     return [
         ratio_figure(
             "6 repeated load",

@@ -104,7 +104,7 @@ def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure
     env = _cache(scratch / f"w-{name}")
     run_python("import assembler", f"assembler.load_model({name!r})", env)  # compiles, records, stores
     entry = run_python(
-        "import assembler\nfrom assembler.cache import default_store\n"
+        "import assembler\nfrom assembler.build.service import default_store\n"
         "from assembler.cache.key import cache_key",
         f"s = default_store(); e = s.entry(cache_key(assembler.assemble({name!r}).build_inputs()))\n"
         'out["path"] = str(s.directory / e.model)',

@@ -51,6 +51,9 @@ TWO_LINK_MJCF = """\
 """Two hinge joints: 'shoulder' gets armature 2 and damping 3 through childclass 'wrist' nested
 in 'arm'; 'elbow' gets damping 3 from its explicit class 'arm' and a literal frictionloss."""
 
+TETRAHEDRON_OBJ = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+"""A 0.1 m tetrahedron as OBJ text: the smallest mesh MuJoCo compiles, for tests that need a mesh file."""
+
 TWO_LINK_SPEC = """\
 name: TwoLink
 mjcf: twolink.xml

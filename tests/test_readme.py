@@ -45,8 +45,9 @@ def test_readme_robosuite_example_runs_a_spec_robot_in_robosuites_lift(tmp_path:
     assert f"# {printed}" in example  # what the README says it prints
 
 
-def test_readme_spec_example_validates() -> None:
+def test_readme_spec_example_validates(monkeypatch: pytest.MonkeyPatch) -> None:
     spec_text, _ = _blocks("yaml")
+    monkeypatch.chdir(ROOT / "specs")  # its mjcf path is relative to specs/, where a user would save it
     loaded = load_string(spec_text, PARENTS)
     assert loaded.spec.name == "Sparrow7Soft"
     assert loaded.spec.resolve_base_xpos_offset("table", table_length=0.8)[0] == -0.56

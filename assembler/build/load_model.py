@@ -1,7 +1,7 @@
 """``assembler.load_model``: a robot's compiled model in as little time as MuJoCo's own load of it.
 
 A request made before in this environment is answered from the compiled-model cache through its
-request record (:mod:`assembler.cache.repeat`) without importing the schema or reading any spec;
+request record (:mod:`assembler.build.repeat`) without importing the schema or reading any spec;
 anything else takes the full path (``assemble(...).get_model()``) and records the request for
 next time. This module imports only the cache layer and MuJoCo: that is what keeps a warm load
 close to ``mujoco.MjModel.from_binary_path`` of the cached file.
@@ -16,10 +16,9 @@ from typing import Any
 
 import mujoco
 
-from assembler.cache.repeat import answered_model
+from assembler.build.repeat import answered_model, keyed
+from assembler.registry.arguments import DEFAULT, spec_file_path
 
-DEFAULT = "default"
-"""The robot spec's default base or gripper (as :func:`assembler.assemble` takes it)."""
 
 
 def _plain(overrides: Any) -> Any:
@@ -48,16 +47,16 @@ def load_model(
     cache without reading any spec, as long as every spec file, spec folder and model input it
     was made from is unchanged; ``cache=False`` compiles (and records nothing).
     """
-    robot_is_file = robot.endswith((".yaml", ".yml")) or Path(robot).is_file()
-    request = {
+    spec_file = spec_file_path(robot)
+    request = keyed({
         "kind": "load_model",
-        "robot": str(Path(robot).resolve()) if robot_is_file else robot,
+        "robot": str(spec_file) if spec_file is not None else robot,
         "idn": idn,
         "base": base,
         "grippers": dict(grippers) if grippers is not None else None,
         "overrides": _plain(overrides),
         "specs": [str(Path(folder).resolve()) for folder in specs],
-    }
+    })
     if cache:
         model = answered_model(request)
         if model is not None:

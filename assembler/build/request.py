@@ -1,6 +1,6 @@
 """The slow path of a request: resolve it with the registry (reading and validating specs), answer
 it through the compile service, and record it so the next process answers it from the cache
-(:mod:`assembler.cache.repeat`).
+(:mod:`assembler.build.repeat`).
 
 A request is recorded only when its answer can be found again from the request alone: every part
 is made from spec files (their files and times as read are in the record), and every spec the
@@ -17,18 +17,14 @@ from pathlib import Path
 
 import mujoco
 
+from assembler.registry.arguments import is_spec_file
 from assembler.registry.instances import assemble
 from assembler.cache.key import cache_key
-from assembler.cache.repeat import Origin, Request, record
+from assembler.build.repeat import KeyedRequest, Origin, record
 from assembler.registry.catalog import add_spec_folders, register_specs
-from assembler.spec.documents import SPEC_SUFFIXES, Overrides
+from assembler.spec.documents import Overrides
 from assembler.models import REGISTRIES, PartModel, RobotModel
 from assembler.files.paths import is_file, shipped_specs_dir
-
-
-def is_spec_file(reference: str) -> bool:
-    """True when a robot reference is a spec file rather than a registered name."""
-    return reference.endswith(SPEC_SUFFIXES) or is_file(reference)
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:
@@ -52,7 +48,7 @@ def _registry_within(roots: Sequence[Path]) -> bool:
 
 
 def record_answer(
-    request: Request,
+    request: KeyedRequest,
     robot: RobotModel,
     folders: Iterable[Path],
     robot_file: Path | None,
@@ -61,7 +57,7 @@ def record_answer(
     """Record that ``request`` is answered by ``robot``'s entry in the compiled-model cache, with
     the user's spec ``folders`` and ``robot_file`` registered besides the shipped specs; returns
     whether a record was written (see the module's rules)."""
-    key = cache_key(robot.build_inputs())
+    key = robot.entry_key  # the entry the robot's model was just answered from or stored under
     if key is None:
         return False
     roots = [shipped_specs_dir().resolve(), *(Path(folder).resolve() for folder in folders)]
@@ -90,7 +86,7 @@ def resolve(
 
 
 def load_and_record(
-    request: Request,
+    request: KeyedRequest,
     robot: str,
     idn: int | str,
     base: str | None,

@@ -1,7 +1,7 @@
-"""The compiled-model cache: an assembly whose inputs have not changed loads MuJoCo's binary model
-from disk instead of compiling its meshes again.
+"""The compiled-model cache's storage: an assembly whose inputs have not changed loads MuJoCo's
+binary model from disk instead of compiling its meshes again.
 
-:mod:`assembler.cache.service` is the compile service models call; a lookup hashes the build
+The compile service that uses it is :mod:`assembler.build.service`; a lookup hashes the build
 inputs (:mod:`assembler.cache.key`), finds the entry (:mod:`assembler.cache.store`) and checks
 the files it was compiled from (:mod:`assembler.cache.dependencies`); nothing is assembled on a
 hit. A model loaded again and again in one process is copied from memory
@@ -10,35 +10,15 @@ off; :mod:`assembler.cache.settings` has the other knobs.
 """
 
 from assembler.cache.inputs import BuildInputs, JointEdit, PartInputs
-from assembler.cache.service import (
-    Assembly,
-    CompiledModel,
-    LookupCounts,
-    clear,
-    compile_assembly,
-    compile_model,
-    counts,
-    default_store,
-    wait_for_writes,
-)
 from assembler.cache.settings import cache_dir, cache_disabled
 from assembler.cache.store import CacheInfo, ModelStore
 
 __all__ = [
-    "Assembly",
     "BuildInputs",
     "CacheInfo",
-    "CompiledModel",
     "JointEdit",
-    "LookupCounts",
     "ModelStore",
     "PartInputs",
     "cache_dir",
     "cache_disabled",
-    "clear",
-    "compile_assembly",
-    "compile_model",
-    "counts",
-    "default_store",
-    "wait_for_writes",
 ]

@@ -161,7 +161,7 @@ def clear(root: Path) -> FolderInfo:
     before = info(root)
     for _, item, _ in _scan(root):
         try:
-            os.unlink(item.path)
+            Path(item.path).unlink()
         except FileNotFoundError:
             continue  # another process removed it meanwhile
         except OSError as error:

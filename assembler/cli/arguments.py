@@ -10,6 +10,8 @@ import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from assembler.mjcf.geom_group_numbers import GROUP_COUNT
+
 Define = Callable[[argparse.ArgumentParser], None]
 
 REPORT_FORMATS: dict[str, str] = {
@@ -112,8 +114,8 @@ def image_size(text: str) -> tuple[int, int]:
     return size
 
 
-GEOM_GROUPS = range(6)
-"""MuJoCo's geom groups (``mjNGROUP``); ``models.geom_groups.GROUP_COUNT`` (a test keeps them equal)."""
+GEOM_GROUPS = range(GROUP_COUNT)
+"""The geom groups ``render --groups`` takes."""
 
 
 def geom_groups(text: str) -> tuple[int, ...]:
@@ -253,6 +255,20 @@ def _render(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def _new(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("model_file", help="the vendor's MJCF (.xml) or URDF (.urdf) file; it is not changed")
+    parser.add_argument(
+        "-o",
+        "--output",
+        metavar="SPEC",
+        help="spec file to write (default: <spec name in snake case>.yaml here)",
+    )
+    parser.add_argument(
+        "--kind", choices=("robot", "gripper"), help="a robot arm or a hand (default: guessed from the names)"
+    )
+    parser.add_argument("--force", action="store_true", help="replace SPEC if it exists")
+
+
 def _cache(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("action", choices=("info", "clear"), help="info: location and size; clear: empty it")
 
@@ -316,6 +332,16 @@ COMMANDS: tuple[Command, ...] = (
         "offscreen renderer, auto-framed, on a floor, one tile per view.",
         epilog="Headless Linux: when MUJOCO_GL is unset and there is no DISPLAY, MUJOCO_GL=egl is "
         "used; set MUJOCO_GL=osmesa for software rendering.",
+    ),
+    Command(
+        "new",
+        "write a first spec for a vendor's MJCF or URDF, every guess commented",
+        _new,
+        "assembler.cli.new",
+        description="Read an MJCF or URDF file as a spec would and write a spec that validates and builds "
+        "as written: name, file, joint groups, end-effector, home pose, actuators where the file has none. "
+        "Comments mark each guess ('guess:') and what only you can decide ('decide:', with the field to "
+        "set); docs/add-your-robot.md explains each. The model file is never changed.",
     ),
     Command("cache", "show or empty the compiled-model cache", _cache, "assembler.cli.cache"),
 )

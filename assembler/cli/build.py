@@ -10,7 +10,7 @@ from pathlib import Path
 
 from assembler.build.request import record_answer
 from assembler.cli.common import assembled, idle_override_warnings, use_cache
-from assembler.cli.quick_build import build_request, robot_file, write_xml
+from assembler.cli.quick_build import request_of, robot_file, write_xml
 
 
 def run(args: argparse.Namespace) -> int:
@@ -20,7 +20,7 @@ def run(args: argparse.Namespace) -> int:
     write_xml(args, xml, type(robot).__name__)
     for note in notes:
         print(note, file=sys.stderr)
-    request = build_request(args)
+    request = request_of(args)
     if request is not None:
         record_answer(request, robot, [Path(folder) for folder in args.specs], robot_file(args), notes)
     return 0

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import argparse
 
-from assembler.cache import cache_disabled, clear, default_store
+from assembler.build.service import clear, default_store
+from assembler.cache import cache_disabled
 from assembler.cache.folder import LABELS
 from assembler.cache.folder import info as folder_info
 from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes

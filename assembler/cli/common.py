@@ -9,18 +9,18 @@ from collections.abc import Sequence
 from assembler.build.override_effects import overrides_without_effect, superseded
 from assembler.errors import AssemblerError
 from assembler.files.inputs import note_inputs
-from assembler.files.paths import is_file
 from assembler.models import RobotModel
-from assembler.registry.catalog import register_specs
-from assembler.registry.instances import DEFAULT, assemble, create_robot
+from assembler.registry.arguments import DEFAULT, is_spec_file
+from assembler.registry.catalog import register_with_siblings
+from assembler.registry.instances import assemble, create_robot
 from assembler.registry.lookup import robot_class
-from assembler.spec.documents import SPEC_SUFFIXES, Override, parse_overrides
+from assembler.spec.documents import Override, parse_overrides
 
 
 def robot_name(reference: str) -> str:
     """A registered robot name, registering the spec first when given a spec file path."""
-    if reference.endswith(SPEC_SUFFIXES) or is_file(reference):
-        registered = register_specs(reference)
+    if is_spec_file(reference):
+        registered = register_with_siblings([reference])
         if not registered:  # a folder named like a spec file
             raise AssemblerError(f"{reference}: no spec in it; give a spec file or a robot name")
         return registered[0].__name__

@@ -41,7 +41,7 @@ def run(args: argparse.Namespace) -> int:
     if changes:
         print("overrides: " + ", ".join(f"{c.key}={json.dumps(c.value, default=str)}" for c in changes))
     print(f"{robot.spec.source_field}: {display_path(robot.source.path)}")
-    for note in robot.source.notes:
+    for note in [*robot.source.notes, *robot.conventions_applied()]:
         print(f"note: {note}")
     attributes = list(JOINT_RULE_ATTRIBUTES) + sorted(
         {a for values in robot.joint_values.values() for a in values} - set(JOINT_RULE_ATTRIBUTES)

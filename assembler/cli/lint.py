@@ -28,21 +28,32 @@ def _target(cls: type[PartModel], args: argparse.Namespace) -> LintTarget:
 
 
 def _counts(findings: Sequence[Finding]) -> str:
-    counts = Counter(f.severity for f in findings)
+    counts = Counter(f.severity for f in findings if f.acknowledged is None)
     parts = [f"{counts[s]} {s}{'s' if counts[s] != 1 else ''}" for s in SEVERITIES if counts[s]]
+    acknowledged = sum(f.acknowledged is not None for f in findings)
+    if acknowledged:
+        parts.append(f"{acknowledged} acknowledged")
     return ", ".join(parts) or "no findings"
 
 
 def _print_text(name: str, findings: Sequence[Finding]) -> None:
     for finding in findings:
         where = str(finding.location) if finding.location else name
-        print(f"{where}: {finding.severity} {finding.code} {finding.subject}: {finding.why}")
-        print(f"    fix: {finding.fix}")
+        marker = "acknowledged " if finding.acknowledged is not None else ""
+        print(f"{where}: {marker}{finding.severity} {finding.code} {finding.subject}: {finding.why}")
+        if finding.acknowledged is not None:
+            print(f"    acknowledged: {finding.acknowledged}")
+        else:
+            print(f"    fix: {finding.fix}")
     print(f"{name}: {_counts(findings)}")
 
 
 def _print_github(name: str, findings: Sequence[Finding]) -> None:
     for finding in findings:
+        if finding.acknowledged is not None:
+            message = f"{finding.subject}: {finding.why}. Acknowledged: {finding.acknowledged}"
+            print(github_annotation("info", message, finding.location, f"{finding.code} ({name})"))
+            continue
         message = f"{finding.subject}: {finding.why}. Fix: {finding.fix}"
         print(github_annotation(finding.severity, message, finding.location, f"{finding.code} ({name})"))
 
@@ -54,6 +65,7 @@ def _as_json(finding: Finding) -> dict[str, object]:
         "subject": finding.subject,
         "why": finding.why,
         "fix": finding.fix,
+        "acknowledged": finding.acknowledged,
         **location_fields(finding.location),
     }
 
@@ -83,5 +95,5 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps({"targets": targets, "problems": problem_items}, indent=2))
     elif problems:
         print_problems(problems, args.format)
-    failed = bool(problems) or any(f.severity == "error" for _, found in results for f in found)
+    failed = bool(problems) or any(f.fails for _, found in results for f in found)
     return 1 if failed else 0

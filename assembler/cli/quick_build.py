@@ -1,6 +1,6 @@
 """``assembler build`` answered from the cache before any spec is read: a build made before with
 the same flags, in the same environment, from unchanged spec files writes the XML the cache kept
-(see :mod:`assembler.cache.repeat`). This module imports the cache layer and nothing that reads
+(see :mod:`assembler.build.repeat`). This module imports the cache layer and nothing that reads
 specs, so the command line tries it before the catalog is imported (``assembler.cli.main``).
 """
 
@@ -11,17 +11,16 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from assembler.cache.repeat import answered_xml
+from assembler.build.repeat import KeyedRequest, answered_xml, keyed
 from assembler.cache.settings import volatile_folders
 from assembler.files.bundles import bundle_xml, write_model
-from assembler.files.paths import allowing, display_path, is_file
+from assembler.files.paths import allowing, display_path
+from assembler.registry.arguments import spec_file_path
 
 
 def robot_file(args: argparse.Namespace) -> Path | None:
     """The robot's spec file, when the command names one rather than a registered robot."""
-    reference: str = args.robot
-    spec_file = reference.endswith((".yaml", ".yml")) or is_file(reference)
-    return Path(reference).resolve() if spec_file else None
+    return spec_file_path(args.robot)
 
 
 def build_request(args: argparse.Namespace) -> dict[str, Any] | None:
@@ -44,6 +43,15 @@ def build_request(args: argparse.Namespace) -> dict[str, Any] | None:
     }
 
 
+def request_of(args: argparse.Namespace) -> KeyedRequest | None:
+    """The request of a ``build`` command line: the one :func:`answer` made, or made now."""
+    made: KeyedRequest | None = getattr(args, "request", None)
+    if made is not None:
+        return made
+    plain = build_request(args)
+    return None if plain is None else keyed(plain)
+
+
 def write_xml(args: argparse.Namespace, xml: str, default_name: str) -> None:
     """Write ``xml`` where the flags say: a bundle folder, a file, or standard output."""
     if args.bundle:
@@ -61,10 +69,11 @@ def write_xml(args: argparse.Namespace, xml: str, default_name: str) -> None:
 
 def answer(args: argparse.Namespace) -> int | None:
     """Carry out ``build`` from the cache and return its exit code, or None when the cache cannot
-    answer (the full command runs then)."""
-    request = build_request(args)
-    if request is None:
+    answer (the full command runs then, and records ``args.request``, the request made here)."""
+    plain = build_request(args)
+    if plain is None:
         return None
+    request = args.request = keyed(plain)
     with allowing(args.allow_path):  # as the full command runs: the allowed folders are in the key
         found = answered_xml(request)
     if found is None:

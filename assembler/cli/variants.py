@@ -9,9 +9,8 @@ from typing import Literal
 
 from assembler.cli.common import gripper_choices, robot_name
 from assembler.files.paths import display_path
-from assembler.registry.instances import DEFAULT
+from assembler.registry.arguments import DEFAULT, spec_file_path
 from assembler.registry.lookup import robot_class
-from assembler.spec.documents import SPEC_SUFFIXES
 from assembler.worlds.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
 
 
@@ -24,7 +23,8 @@ def plan_from(args: argparse.Namespace) -> VariantPlan:
     grippers = gripper_choices(args.gripper)
     if args.no_grippers:
         grippers = {arm: None for arm in getattr(robot_class(name).spec, "arms", ())}
-    robot_file = [str(Path(args.robot).resolve())] if args.robot.endswith(SPEC_SUFFIXES) else []
+    spec_file = spec_file_path(args.robot)
+    robot_file = [str(spec_file)] if spec_file is not None else []
     return VariantPlan(
         robot=name,
         idn=args.idn,
@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     folder = display_path(args.output)
     models = f"{run.distinct} distinct model{'s' if run.distinct != 1 else ''}"
     written = f"wrote {len(run.written)} of {len(run.results)} variants of {plan.robot}"
-    print(f"{written} to {folder} ({manifest}): {models}")
+    print(f"{written} to {folder} ({manifest}): {models}", file=sys.stderr)  # as every command's "wrote"
     for key in run.no_effect:
         print(
             f"warning: {plan.flag_of(key)} {key} changes nothing in the compiled model (variants that differ "

@@ -32,3 +32,18 @@ models with inline heightfields or meshes stay well below this."""
 
 MAX_MJCF_INCLUDE_DEPTH = 16
 """Levels of MJCF ``<include>`` files checked before MuJoCo reads them; real models use one."""
+
+MAX_DAE_BYTES = 64 * 1024 * 1024
+"""64 MiB per COLLADA (.dae) mesh converted with trimesh, read in one bounded read. The largest in
+example-robot-data (go1's trunk.dae) is 29 MB; trimesh's memory grows many times the file's size."""
+
+MAX_URDF_LINKS = 1000
+"""Links in one URDF, and joints (a tree of links has one joint fewer). MuJoCo's compiler stops at a
+kinematic depth of about 1,000 bodies (a chain of 1,500 links: "depth limit exceeded"), and its URDF
+import crashes outright on a chain of 2,000 ("Caught an unknown exception!"); a humanoid with hands
+has under 100."""
+
+MAX_URDF_DEPTH = 64
+"""Levels of nested elements in a URDF. A URDF nests about six deep (robot/link/visual/geometry/mesh);
+thousands of nested ``<visual>`` would otherwise end in a RecursionError when the text is written
+back for MuJoCo."""

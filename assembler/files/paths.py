@@ -198,21 +198,33 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     """Turn a spec's file reference into an absolute path or keep a ``package://`` reference.
 
     Relative paths are taken relative to the spec's own folder (or the working directory for
-    a spec given as a string), so a spec and its MJCF can move together. An existing path must
-    stay below that folder, the folders of the spec repository holding it (:func:`spec_homes`) or
-    a trusted one (:func:`confine`); :class:`SpecError` otherwise. A path that does not exist yet
-    is checked when it is read (:func:`locate_model_file`).
+    a spec given as a string), so a spec and its MJCF can move together. The path must stay below
+    that folder, the folders of the spec repository holding it (:func:`spec_homes`) or a trusted
+    one (:func:`confine`), whether or not it exists yet (a refusal says nothing about what exists
+    outside); :class:`SpecError` otherwise. A ``package://NAME/...`` reference to a package the spec
+    repository declares becomes that file's path; any other stays as written, for
+    :func:`locate_model_file` (or the URDF importer) to find among the environment's packages.
     """
     refuse_nul(reference)
-    if reference.startswith(PACKAGE_SCHEME):
-        return reference
     home = spec_dir or Path.cwd()
+    if reference.startswith(PACKAGE_SCHEME):
+        declared = _declared_package_file(reference, home)
+        return reference if declared is None else str(declared)
     path = Path(reference).expanduser()
     if not path.is_absolute():
         path = home / path
-    if not os.path.lexists(path):  # nothing to read yet: "not found" is the error, when it is read
-        return str(path.resolve())
     return str(confine(path, spec_homes(home), ""))
+
+
+def _declared_package_file(reference: str, home: Path) -> Path | None:
+    """The file a ``package://`` reference names in a package the repository holding ``home``
+    declares (confined to that package), or None when it declares no such package."""
+    name, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
+    repository = find_repository(home)
+    folder = repository.package(name) if repository is not None else None
+    if folder is None:
+        return None
+    return confine(folder / inner, [folder], f"{reference}: ")
 
 
 def is_file(path: str | Path) -> bool:
@@ -224,10 +236,19 @@ def is_file(path: str | Path) -> bool:
         return False
 
 
+def is_dir(path: str | Path) -> bool:
+    """Whether ``path`` is a folder, with :func:`is_file`'s tolerance of impossible names."""
+    try:
+        return Path(path).is_dir()
+    except (OSError, ValueError):
+        return False
+
+
 def locate_model_file(reference: str) -> Path:
     """The file behind a resolved reference; raises :class:`MjcfError` saying what to do if absent.
 
-    A ``package://`` path must stay inside its package's folder.
+    A ``package://`` path must stay inside its package's folder; every path is confined before its
+    existence is looked at, so a refusal is the same for a missing file and an existing one.
     """
     refuse_nul(reference, error=MjcfError)
     if reference.startswith(PACKAGE_SCHEME):
@@ -241,13 +262,10 @@ def locate_model_file(reference: str) -> Path:
                 f"install it{install_hint(package)}",
                 package,
             )
-        path = root / inner
-        if is_file(path):
-            path = confine(path, [root], f"{reference}: ", MjcfError)
+        path = confine(root / inner, [root], f"{reference}: ", MjcfError)  # before existence: no oracle
     else:
-        path = Path(reference)
-        if is_file(path):  # admitted when its spec was loaded, unless it appeared only since
-            path = confine(path, homes_of(path.resolve()), "", MjcfError)
+        path = Path(reference)  # admitted when its spec was loaded; checked again, it may be a link now
+        path = confine(path, homes_of(path.resolve()), "", MjcfError)
     if not is_file(path):
         raise MjcfError(f"MJCF file not found: {display_path(path)}")
     return path

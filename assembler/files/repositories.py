@@ -8,8 +8,11 @@ read, at its root, in one of (the first found wins, as ruff finds its configurat
 - ``robot-assembler.toml``, with the keys at the top level (an empty file means the defaults);
 - ``pyproject.toml``, in a ``[tool.robot-assembler]`` table (a pyproject without it is not one).
 
-Keys: ``specs`` (default ``["specs"]``), ``assets`` (default ``["assets"]``) and ``allow`` (other
-folders), each a list of folders relative to the root. The declaration is found by walking up from
+Keys: ``specs`` (default ``["specs"]``), ``assets`` (default ``["assets"]``), ``allow`` (other
+folders) and ``packages`` (ROS package folders, e.g. a vendor's ``z1_description`` beside its URDF:
+what ``package://NAME`` in a URDF or a spec may name, besides the packages of the environment), each a
+list of folders relative to the root. A package is named by its ``package.xml`` (``<name>``), or by
+its folder without one. The declaration is found by walking up from
 the spec's folder, symbolic links resolved first; the walk stops at the first folder holding
 ``.git`` (a repository's top: a declaration above it belongs to another project). Every folder it
 names must lie inside the root once resolved (``..``, absolute paths and links leading out are
@@ -28,6 +31,7 @@ from typing import Any
 
 from assembler.errors import SpecError, did_you_mean
 from assembler.files.limits import MAX_SPEC_BYTES
+from assembler.files.plain_xml import parse_plain_xml
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -41,8 +45,16 @@ PYPROJECT = "pyproject.toml"
 TABLE = "robot-assembler"
 """The ``[tool.robot-assembler]`` table of a pyproject.toml."""
 
-DEFAULTS: dict[str, tuple[str, ...]] = {"specs": ("specs",), "assets": ("assets",), "allow": ()}
+DEFAULTS: dict[str, tuple[str, ...]] = {
+    "specs": ("specs",),
+    "assets": ("assets",),
+    "allow": (),
+    "packages": (),
+}
 """The keys of a declaration and the folders each names when it is not given."""
+
+EXAMPLES: dict[str, str] = {"allow": "meshes", "packages": "vendor/z1_description"}
+"""A folder each key could name, for messages (the others name folders of their own name)."""
 
 
 @dataclass(frozen=True)
@@ -56,11 +68,17 @@ class SpecRepository:
     specs: tuple[Path, ...]
     assets: tuple[Path, ...]
     allowed: tuple[Path, ...]
+    packages: tuple[tuple[str, Path], ...] = ()
+    """The ROS packages it declares, as (name, folder resolved inside it)."""
 
     @property
     def readable(self) -> tuple[Path, ...]:
         """Every folder its specs may read, besides their own."""
-        return (*self.specs, *self.assets, *self.allowed)
+        return (*self.specs, *self.assets, *self.allowed, *(folder for _, folder in self.packages))
+
+    def package(self, name: str) -> Path | None:
+        """The folder of the package ``name`` it declares, if it declares one."""
+        return dict(self.packages).get(name)
 
     @property
     def where(self) -> str:
@@ -82,6 +100,17 @@ def _where(declared_in: Path) -> str:
 @functools.lru_cache(maxsize=64)
 def _parsed(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
     """A TOML file's content, parsed once per version of the file (the walk passes every level)."""
+    data = _bounded_bytes(path)
+    try:
+        parsed: dict[str, Any] = tomllib.loads(data.decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError, RecursionError) as error:
+        reason = "nested too deeply" if isinstance(error, RecursionError) else str(error)
+        raise SpecError(f"{_shown(path)}: not valid TOML: {reason}") from None
+    return parsed
+
+
+def _bounded_bytes(path: Path) -> bytes:
+    """A declaration's file (TOML, a package.xml), read with the spec-file size limit."""
     try:
         with path.open("rb") as stream:
             data = stream.read(MAX_SPEC_BYTES + 1)
@@ -89,12 +118,7 @@ def _parsed(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
         raise SpecError(f"{_shown(path)}: cannot read it ({error.strerror or error})") from None
     if len(data) > MAX_SPEC_BYTES:
         raise SpecError(f"{_shown(path)}: larger than the limit of {MAX_SPEC_BYTES} bytes")
-    try:
-        parsed: dict[str, Any] = tomllib.loads(data.decode("utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError, RecursionError) as error:
-        reason = "nested too deeply" if isinstance(error, RecursionError) else str(error)
-        raise SpecError(f"{_shown(path)}: not valid TOML: {reason}") from None
-    return parsed
+    return data
 
 
 def _read(path: Path) -> dict[str, Any]:
@@ -123,7 +147,8 @@ def _folders(root: Path, where: str, key: str, settings: dict[str, Any]) -> tupl
     given = key in settings
     value = settings.get(key, DEFAULTS[key])
     if not isinstance(value, (list, tuple)) or not all(isinstance(item, str) for item in value):
-        raise SpecError(f'{where}: {key} must be a list of folder names, e.g. {key} = ["{key}"]')
+        example = EXAMPLES.get(key, key)
+        raise SpecError(f'{where}: {key} must be a list of folder names, e.g. {key} = ["{example}"]')
     folders = []
     for item in value:
         if "\0" in item or not item or os.path.isabs(item):
@@ -145,6 +170,29 @@ def _folders(root: Path, where: str, key: str, settings: dict[str, Any]) -> tupl
     return tuple(folders)
 
 
+def package_name(folder: Path) -> str:
+    """The name of the ROS package in ``folder``: its package.xml's ``<name>``, else the folder's name."""
+    manifest = folder / "package.xml"
+    if not os.path.isfile(manifest):
+        return folder.name
+    root = parse_plain_xml(_bounded_bytes(manifest), _shown(manifest), SpecError)
+    return (root.findtext("name") or "").strip() or folder.name
+
+
+def _packages(where: str, folders: tuple[Path, ...]) -> tuple[tuple[str, Path], ...]:
+    """Each declared package folder by its name; two folders of one name are refused."""
+    packages: dict[str, Path] = {}
+    for folder in folders:
+        name = package_name(folder)
+        if name in packages:
+            raise SpecError(
+                f"{where}: packages: {packages[name]} and {folder} are both package '{name}'; "
+                "declare one of them"
+            )
+        packages[name] = folder
+    return tuple(packages.items())
+
+
 def _repository(root: Path, declared_in: Path, settings: dict[str, Any]) -> SpecRepository:
     where = _where(declared_in)
     unknown = sorted(set(settings) - set(DEFAULTS))
@@ -159,6 +207,7 @@ def _repository(root: Path, declared_in: Path, settings: dict[str, Any]) -> Spec
         specs=_folders(root, where, "specs", settings),
         assets=_folders(root, where, "assets", settings),
         allowed=_folders(root, where, "allow", settings),
+        packages=_packages(where, _folders(root, where, "packages", settings)),
     )
 
 

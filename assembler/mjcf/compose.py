@@ -220,9 +220,17 @@ def attach_gripper(
 ) -> None:
     """Attach a gripper as the last child of the hand body, with the robot's mount pose if given."""
     hand = find_body(assembly, hand_body, "end-effector body")
-    root = gripper.worldbody.first_body()
+    place_root(gripper, pos, quat)
+    attach(assembly, gripper, hand.add_frame(), prefix)
+
+
+def place_root(part: mujoco.MjSpec, pos: Sequence[float] | None, quat: Sequence[float] | None) -> None:
+    """Give ``part``'s root body this position and orientation (None: keep the file's). The
+    orientation replaces one the file gives in any form (euler, axisangle, ...): MuJoCo would
+    otherwise compile the file's form and ignore the quaternion."""
+    root = part.worldbody.first_body()
     if pos is not None:
         root.pos = list(pos)
     if quat is not None:
         root.quat = list(quat)
-    attach(assembly, gripper, hand.add_frame(), prefix)
+        root.alt.type = mujoco.mjtOrientation.mjORIENTATION_QUAT

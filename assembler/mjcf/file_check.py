@@ -32,6 +32,7 @@ import mujoco
 
 from assembler.errors import MjcfError
 from assembler.mjcf import mujoco_warnings
+from assembler.mjcf.asset_names import name_assets_after_files
 from assembler.mjcf.refusal import LineMap, refusal_line
 
 TETRAHEDRON: tuple[float, ...] = (0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)
@@ -43,7 +44,9 @@ MASS_FLOOR = 1e-6
 
 def _stand_in_assets(spec: mujoco.MjSpec, resolved: mujoco.MjSpec) -> None:
     """Replace the contents of file-backed meshes, textures and height fields (names stay); skins
-    keep their files, which name bones, read from the paths already resolved in ``resolved``."""
+    keep their files, which name bones, read from the paths already resolved in ``resolved``. An
+    unnamed asset first takes its file's name, as MuJoCo would have given it from the file."""
+    name_assets_after_files(spec)
     spec.meshdir = spec.texturedir = ""
     for skin, same in zip(spec.skins, resolved.skins, strict=True):
         skin.file = same.file

@@ -67,6 +67,11 @@ def _clean(text: str) -> str:
 
 
 def _hint(message: str) -> str:
+    if "balanceinertia" in message:  # MuJoCo names its own knob; ours is a declared repair
+        return (
+            "correct the <inertial>, or declare the repair in the spec: mjcf_fixes: [{element: compiler, "
+            "set: {balanceinertia: 'true'}, why: ...}]"
+        )
     if _REFERENCE.search(message):
         return "correct the name or remove the element"
     return "correct the file"
@@ -90,4 +95,5 @@ def refusal_line(error: str, shown: str, lines: LineMap, refusal: str) -> str:
         name = where.groupdict().get("name")
         if name and f"'{name}'" not in message:
             message += f" (element '{name}')"
-    return f"{located}: {refusal}: {message}; {_hint(message)}{REPAIR_HINT}"
+    hint = _hint(message)
+    return f"{located}: {refusal}: {message}; {hint}{'' if 'mjcf_fixes' in hint else REPAIR_HINT}"

@@ -1,4 +1,4 @@
-"""Remove joints together with everything that drives, couples or measures them.
+"""Remove joints (or bodies) together with everything that drives, couples or measures them.
 
 robosuite's ``_remove_joint_actuation`` handles motors and position actuators only and leaves
 velocity/general actuators, sensors of removed actuators and single-joint equalities dangling or
@@ -76,6 +76,38 @@ def remove_joints(spec: mujoco.MjSpec, names: Iterable[str]) -> None:
     for joint in list(spec.joints):
         if joint.name in joints:
             spec.delete(joint)
+
+
+def _subtree(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
+    bodies = [body]
+    for child in body.bodies:
+        bodies += _subtree(child)
+    return bodies
+
+
+def remove_bodies(spec: mujoco.MjSpec, names: Iterable[str]) -> None:
+    """Delete the named bodies with everything below them and everything that references what goes:
+    the joints' actuators, tendons, equalities and sensors (:func:`remove_joints`), sensors of their
+    sites, bodies and geoms, welds and connects to them, and contact exclusions naming them."""
+    bodies = [b for name in names if (top := spec.body(name)) is not None for b in _subtree(top)]
+    if not bodies:
+        return
+    remove_joints(spec, [j.name for body in bodies for j in body.joints if j.type != FREE])
+    body_names = {body.name for body in bodies}
+    element_names = body_names | {e.name for body in bodies for e in [*body.sites, *body.geoms] if e.name}
+    for sensor in list(spec.sensors):
+        if sensor.objname in element_names or sensor.refname in element_names:
+            spec.delete(sensor)
+    for equality in list(spec.equalities):
+        if equality.type != mujoco.mjtEq.mjEQ_JOINT and {equality.name1, equality.name2} & element_names:
+            spec.delete(equality)
+    for exclude in list(spec.excludes):
+        if {exclude.bodyname1, exclude.bodyname2} & body_names:
+            spec.delete(exclude)
+    for name in names:
+        top = spec.body(name)
+        if top is not None:
+            spec.delete(top)
 
 
 def remove_free_joints(spec: mujoco.MjSpec) -> None:

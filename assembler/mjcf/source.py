@@ -25,7 +25,8 @@ from assembler.errors import MjcfError, Problem
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
-from assembler.mjcf.attach_compat import refuse_unattachable
+from assembler.mjcf.asset_names import name_assets_after_files
+from assembler.mjcf.attach_compat import refuse_unattachable, settle_default_site_materials
 from assembler.mjcf.authored import Authored, authored_attributes
 from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
@@ -134,25 +135,31 @@ def _unnamed_joints(spec: mujoco.MjSpec) -> list[str]:
     ]
 
 
-def _parse(path: Path, fixes: Sequence[MjcfFix]) -> tuple[ET.Element, mujoco.MjSpec, LineMap]:
-    """The file's XML tree and MjSpec, after its declared repairs, and the map from the lines
-    MuJoCo reports to the file's own."""
+def _parse(
+    path: Path, fixes: Sequence[MjcfFix], included: Mapping[str, bytes]
+) -> tuple[ET.Element, mujoco.MjSpec, LineMap, dict[str, bytes]]:
+    """The file's XML tree and MjSpec, after its declared repairs, the map from the lines MuJoCo
+    reports to the file's own, and the included files' texts as MuJoCo read them (``included``:
+    each ``<include file>`` value -> the file's bytes on disk; repairs apply to them too)."""
     shown = display_path(path)
     lines: LineMap = same_lines
     try:
         root = ET.parse(path).getroot()
         if not fixes:
             with mujoco_warnings.warned(shown):
-                return root, mujoco.MjSpec.from_file(str(path)), lines
+                return root, mujoco.MjSpec.from_file(str(path)), lines, dict(included)
         original = original_lines(root, path.read_bytes())
-        stale = apply_fixes(root, fixes)
+        others = {name: ET.fromstring(text) for name, text in included.items()}
+        stale = apply_fixes([root, *others.values()], fixes)
         if stale:
             raise MjcfError([Problem(f"{shown}: {line}") for line in stale])
-        # Parsed from text: asset paths stay relative and are resolved against the file's folder below.
+        repaired = {name: ET.tostring(other, encoding="utf-8") for name, other in others.items()}
+        # Parsed from text: asset paths stay relative and are resolved against the file's folder below;
+        # the included files are handed over repaired, by the names the <include>s give.
         text = ET.tostring(root, encoding="unicode")
         lines = repaired_lines(root, text, original)
         with mujoco_warnings.warned(shown):
-            return root, mujoco.MjSpec.from_string(text), lines
+            return root, mujoco.MjSpec.from_string(text, include=repaired), lines, repaired
     except ET.ParseError as error:
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     except ValueError as error:
@@ -191,22 +198,19 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     # Stat before parsing: a file edited while we read it then shows a newer stat than recorded.
     files = tuple((str(file), *stat) for file in read if (stat := _stat(str(file))) is not None)
     fixes = _FIXES.validate_json(fixes_json)
-    if fixes and len(read) > 1:
-        raise MjcfError(
-            f"{shown}: mjcf_fixes cannot be used on a file that includes other files: the repaired text "
-            "is parsed from memory, where MuJoCo would look for the included files in the working directory"
-        )
-    root, spec, lines = _parse(path, fixes)
-    included = _included_texts(path, read)
+    on_disk = _included_texts(path, read)
+    root, spec, lines, included = _parse(path, fixes, on_disk)
     normalize_actuator_defaults(root, spec, included)  # MuJoCo < 3.16 leaks other shortcuts' gains
     unnamed = _unnamed_joints(spec)
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
+    name_assets_after_files(spec)  # before attaching prefixes the names: MuJoCo derives them at compile
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
+    spec = settle_default_site_materials(spec)
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
-    check_as_mujoco(_parse(path, fixes)[1], spec, shown, lines)
+    check_as_mujoco(_parse(path, fixes, on_disk)[1], spec, shown, lines)
     refuse_unattachable(spec, shown)
     return MjcfSource(
         path=path,

@@ -72,7 +72,7 @@ def _files_named(data: bytes, shown: str) -> tuple[list[tuple[str, str]], list[s
         parser.Parse(data, True)
     except _Refused as refused:
         raise MjcfError(str(refused)) from None
-    except xml.parsers.expat.ExpatError as error:
+    except (xml.parsers.expat.ExpatError, LookupError) as error:  # LookupError: <?xml encoding="x"?>
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     return named, folders
 

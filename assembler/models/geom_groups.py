@@ -15,12 +15,8 @@ from dataclasses import dataclass
 
 import mujoco
 
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUPS
 from assembler.models import PartModel
-
-COLLISION_GROUP = 0
-VISUAL_GROUPS: tuple[int, ...] = (1, 2)
-GROUP_COUNT = 6
-"""MuJoCo's geom groups are 0 to 5 (``mjNGROUP``); a picture draws 0-2 unless told otherwise."""
 
 
 @dataclass(frozen=True)

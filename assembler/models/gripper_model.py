@@ -6,15 +6,20 @@ import functools
 from collections.abc import Sequence
 from typing import Any, ClassVar
 
+import mujoco
 import numpy as np
 
-from assembler.errors import AssemblerError, Problem
+from assembler.errors import AssemblerError, MjcfError, Problem
+from assembler.mjcf.compose import place_root
+from assembler.mjcf.source import MjcfSource
+from assembler.mjcf.subtree import subtree_source
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
 from assembler.models.registering import Registry
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import GripperSpec
+from assembler.spec.schema.gripper import ROBOSUITE_SENSORS, ROBOSUITE_SITES
 
 REGISTERED_GRIPPERS: Registry[GripperModel] = Registry("gripper")
 """Every registered gripper class by name."""
@@ -63,6 +68,25 @@ class GripperModel(PartModel):
                 check.actuator(FieldPath(("actions", "hold", name)), name)
         return [*super()._name_problems(prepared), *check.problems]
 
+    def _load_source(self) -> MjcfSource:
+        """The gripper's MJCF: the whole file, or the subtree of the spec's ``root_body``."""
+        source = super()._load_source()
+        if self.spec.root_body is None:
+            return source
+        try:
+            return subtree_source(source, self.spec.root_body)
+        except MjcfError as error:
+            field = FieldPath(("root_body",))
+            raise MjcfError([Problem(p.message, self.locate(field), field) for p in error.problems]) from None
+
+    def part_mjspec(self) -> mujoco.MjSpec:
+        """The part's spec (see :meth:`PartModel.part_mjspec`), its root at the origin if the spec
+        asks for it (``root_pose: reset``)."""
+        mjspec = super().part_mjspec()
+        if self.spec.root_pose == "reset":
+            place_root(mjspec, (0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
+        return mjspec
+
     @property
     def naming_prefix(self) -> str:
         """``gripper{idn}_``; robots pass idn ``"{robot_idn}_{arm}"``, e.g. ``gripper0_right_``."""
@@ -103,8 +127,11 @@ class GripperModel(PartModel):
 
     @property
     def important_sites(self) -> dict[str, str]:
-        """Role -> prefixed site name."""
-        return {role: self.naming_prefix + name for role, name in self.spec.important_sites.items()}
+        """Role -> prefixed site name: robosuite's roles whose sites the MJCF has, then the spec's."""
+        present = {r: n for r, n in ROBOSUITE_SITES.items() if self.prepared_mjspec.site(n) is not None}
+        return {
+            role: self.naming_prefix + name for role, name in {**present, **self.spec.important_sites}.items()
+        }
 
     @property
     def important_geoms(self) -> dict[str, list[str]]:
@@ -113,8 +140,12 @@ class GripperModel(PartModel):
 
     @property
     def important_sensors(self) -> dict[str, str]:
-        """Role -> prefixed sensor name."""
-        return {role: self.naming_prefix + name for role, name in self.spec.important_sensors.items()}
+        """Role -> prefixed sensor name: robosuite's roles whose sensors the MJCF has, then the spec's."""
+        present = {r: n for r, n in ROBOSUITE_SENSORS.items() if self.prepared_mjspec.sensor(n) is not None}
+        return {
+            role: self.naming_prefix + name
+            for role, name in {**present, **self.spec.important_sensors}.items()
+        }
 
     @property
     def eef_body(self) -> str:

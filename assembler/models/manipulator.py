@@ -19,6 +19,9 @@ from assembler.models.preparation import PreparedPart
 from assembler.models.robot_model import RobotModel
 from assembler.spec.fieldpath import FieldPath
 
+UNASSIGNED = "unassigned"
+"""The group of a joint that the spec's arm lists leave out and no other group claims."""
+
 
 class ManipulatorModel(RobotModel):
     """A robot arm or arms; grippers attach at the end-effector bodies."""
@@ -120,12 +123,15 @@ class ManipulatorModel(RobotModel):
     # ----- groups -------------------------------------------------------------------------
 
     def group_of(self, joint: str) -> str:
-        """torso, head, legs, base, right or left for one of the robot's own joints."""
+        """torso, head, legs, base, right or left for one of the robot's own joints; ``unassigned``
+        for a joint that declared arm lists leave out (no arm, no controller)."""
         declared = self.spec.joint_groups
         if declared is not None:
             for group in ("torso", "head", "legs", "base", "right", "left"):
                 if any(matching_joints(p, [joint]) for p in getattr(declared, group)):
                     return group
+            if declared.right or declared.left:  # the arms are listed: what they leave out is no arm's
+                return UNASSIGNED
         else:
             by_name = robosuite_group(joint)
             if by_name is not None:

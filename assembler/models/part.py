@@ -9,19 +9,20 @@ their sources, and hands out fresh copies of the prepared spec to attach into an
 from __future__ import annotations
 
 import json
+import warnings
 from typing import Any, ClassVar
 
 import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.build.compile import compile_home
 from assembler.cache.inputs import JointEdit, PartInputs
-from assembler.cache.mesh_swap import compile_from_store
-from assembler.errors import Location, MissingPackageError, MjcfError, Problem, SpecError
-from assembler.files.paths import locate_model_file
+from assembler.errors import AssemblerWarning, Location, MissingPackageError, MjcfError, Problem, SpecError
+from assembler.files.paths import display_path, locate_model_file
 from assembler.mjcf import census, compose
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.mjcf.joints import set_joint_attribute_value
-from assembler.mjcf.keyframe import compile_with_home
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.joint_rules import JointTable
@@ -33,11 +34,12 @@ from assembler.spec.documents.problems import reading_order
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import PartSpec
 from assembler.urdf import load_urdf, locate_urdf_file
+from assembler.urdf.postprocess import unbalanced_inertias
 
 FloatArray = NDArray[np.float64]
 
-COLLISION_GROUP = 0
-VISUAL_GROUP = 1
+_WARNED: dict[Any, Any] = {}
+"""The warnings already shown (Python's registry for warn_explicit), so each is shown once."""
 
 
 class PartModel(metaclass=RegisteringMeta):
@@ -71,6 +73,15 @@ class PartModel(metaclass=RegisteringMeta):
         return Location(f"<class {cls.__qualname__}>")
 
     @classmethod
+    def warn(cls, path: FieldPath, message: str) -> None:
+        """Warn (an :class:`AssemblerWarning`) at a field of this part's spec: Python then shows the
+        spec's file, line and text, not the line of our code that warned. Once per spec line and message."""
+        where = cls.locate(path)
+        warnings.warn_explicit(
+            message, AssemblerWarning, where.file, where.line or 1, module=where.file, registry=_WARNED
+        )
+
+    @classmethod
     def spec_problem(cls, path: FieldPath, message: str) -> Problem:
         """A problem located at a field of this part's spec."""
         return Problem(message, cls.locate(path), FieldPath(path) or None)
@@ -79,7 +90,9 @@ class PartModel(metaclass=RegisteringMeta):
         field = FieldPath((self.spec.source_field,))
         try:
             if self.spec.urdf is not None:
-                return load_urdf(self.spec.urdf, self.spec.balance_inertia)
+                source = load_urdf(self.spec.urdf, self.spec.balance_inertia)
+                self._refuse_unbalanced_inertias(source, field)
+                return source
             return load_mjcf(self.spec.source_file, self.spec.mjcf_fixes)
         except MissingPackageError as error:
             located = [Problem(p.message, self.locate(field), field) for p in error.problems]
@@ -87,6 +100,19 @@ class PartModel(metaclass=RegisteringMeta):
         except MjcfError as error:
             located = [Problem(p.message, self.locate(field), field) for p in error.problems]
             raise type(error)(located) from None
+
+    def _refuse_unbalanced_inertias(self, source: MjcfSource, field: FieldPath) -> None:
+        """A URDF whose link inertias MuJoCo would refuse at the assembly's compile, refused here at
+        the spec's line with the spec's own remedy (MuJoCo's message names its ``balanceinertia``)."""
+        unbalanced = unbalanced_inertias(source.pristine)
+        if unbalanced:
+            message = (
+                f"{display_path(source.path)}: the inertia of link {', '.join(unbalanced)} violates "
+                "A + B >= C, which MuJoCo refuses; set balance_inertia: true in the spec (each becomes "
+                "isotropic at its mean moment, as MuJoCo's balanceinertia does), "
+                "or correct the URDF's <inertia>"
+            )
+            raise MjcfError([Problem(message, self.locate(field), field)])
 
     def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
         """Names the spec gives that its MJCF lacks; each family adds its own fields."""
@@ -133,17 +159,29 @@ class PartModel(metaclass=RegisteringMeta):
         return self.prepared().actuators
 
     def part_mjspec(self) -> mujoco.MjSpec:
-        """A fresh copy of the prepared spec, with joint values and collision colours applied."""
+        """A fresh copy of the prepared spec, with joint values applied, and robosuite's collision
+        colours where the spec asks for them (``collision_colour: robosuite``)."""
         mjspec = self.prepared_mjspec.copy()
         for name, values in self.joint_values.items():
             joint = mjspec.joint(name)
             for attribute, joint_value in values.items():
                 set_joint_attribute_value(joint, attribute, joint_value.value)
-        for geom in mjspec.geoms:
-            if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
-                geom.rgba = self.collision_rgba
-                geom.material = ""
+        if self.spec.collision_colour == "robosuite":
+            for geom in mjspec.geoms:
+                if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
+                    geom.rgba = self.collision_rgba
+                    geom.material = ""
         return mjspec
+
+    def conventions_applied(self) -> list[str]:
+        """What the part's build changes in its file's look by a convention the spec asks for."""
+        if self.spec.collision_colour != "robosuite":
+            return []
+        colour = " ".join(f"{value:g}" for value in self.collision_rgba)
+        return [
+            f"collision geoms (group 0) lose their materials and are coloured {colour} "
+            "(collision_colour: robosuite)"
+        ]
 
     def part_inputs(self) -> PartInputs:
         """What this part contributes to an assembly's cache key (no MJCF is read)."""
@@ -179,7 +217,7 @@ class PartModel(metaclass=RegisteringMeta):
         self.complete_alone(assembly)
         what = f"building {self.family} '{type(self).__name__}' alone"
         census.require_at_least(census.of_spec(assembly), census.of_spec(self.prepared_mjspec), what)
-        return compile_with_home(assembly, self.home_qpos(), self.describe(), compile_from_store)
+        return compile_home(assembly, self.home_qpos(), self.describe())
 
     def complete_alone(self, assembly: mujoco.MjSpec) -> None:
         """What a part needs around it to compile on its own; nothing for most parts."""

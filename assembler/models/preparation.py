@@ -16,7 +16,7 @@ import mujoco
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
 from assembler.mjcf.added_joints import add_free_joint, add_joints
 from assembler.mjcf.joints import joint_attribute, named_joints
-from assembler.mjcf.removal import remove_free_joints, remove_joints
+from assembler.mjcf.removal import remove_bodies, remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource
 from assembler.mjcf.structure import root_body_name
 from assembler.models.actuator_table import ActuatorRecord, declare_actuators
@@ -86,6 +86,7 @@ def prepared_mjspec(
     for key in list(mjspec.keys):  # the assembler writes one merged "home" keyframe instead
         mjspec.delete(key)
     remove_joints(mjspec, removed)
+    remove_bodies(mjspec, getattr(spec, "remove_bodies", []))
     if getattr(spec, "remove_free_joint", False):
         remove_free_joints(mjspec)
     if getattr(spec, "add_free_joint", False):
@@ -152,6 +153,11 @@ def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[P
         model_file = FieldPath((spec.source_field,))
         raise MjcfError([problem(model_file, p.message) for p in error.problems]) from None
     removed, problems = removed_joints(spec, source, problem)
+    for index, name in enumerate(getattr(spec, "remove_bodies", [])):
+        if source.pristine.body(name) is None:
+            problems.append(
+                problem(FieldPath(("remove_bodies", index)), f"no body named '{name}' in the MJCF")
+            )
     mjspec = prepared_mjspec(spec, source, removed, problem)
     kept = named_joints(mjspec)
     actuators, declared = declare_actuators(mjspec, spec.actuators, source.velocity_limits, problem)

@@ -32,7 +32,10 @@ def unknown_name(family: str, name: str, known: list[str]) -> str:
     suggestion = did_you_mean(name, known)
     if suggestion:
         return f"unknown {family} '{name}'.{suggestion}"
-    return f"unknown {family} '{name}'. Registered {family}s: {summarize_names(known, limit=40)}"
+    return (
+        f"unknown {family} '{name}'. Registered {family}s: {summarize_names(known, limit=40)}; a spec in "
+        "another folder is found with --specs FOLDER (assembler.register_specs in Python)"
+    )
 
 
 class Registry(dict[str, type[T]], Generic[T]):

@@ -2,7 +2,7 @@
 
 Building is pure: :meth:`RobotModel.build_mjspec` makes a new assembly from the parts (robot, base,
 grippers), their joint values and the robot's placement. Compiling belongs to the compile service
-(:mod:`assembler.cache.service`), which is given the build inputs and, only on a cache miss, the
+(:mod:`assembler.build.service`), which is given the build inputs and, only on a cache miss, the
 build itself. Name lists come from the parts, so they cannot go stale the way robosuite's
 ``_elements`` do after a mobile base is merged.
 """
@@ -15,16 +15,15 @@ from typing import Any, ClassVar
 import mujoco
 import numpy as np
 
-from assembler.cache.emission import compile_and_emit
+from assembler.build.compile import compile_and_emit, compile_home
+from assembler.build.service import Assembly, compile_model, compile_xml, entry_key
 from assembler.cache.inputs import BuildInputs, JointEdit
-from assembler.cache.mesh_swap import compile_from_store
-from assembler.cache.service import Assembly, compile_model, compile_xml
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.files.writing import write_atomically
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import set_joint_attribute_value
-from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
+from assembler.mjcf.keyframe import Keyframe
 from assembler.models.bases import RobotBaseModel
 from assembler.models.joint_rules import JointValue
 from assembler.models.part import FloatArray, PartModel
@@ -51,6 +50,9 @@ class RobotModel(PlacedPart):
         super().__init__(idn)
         self.mujoco_model: mujoco.MjModel | None = None
         self._keyframe: Keyframe | None = None
+        self.entry_key: str | None = None
+        """The compiled-model cache entry the last ``get_model``/``get_xml`` was answered from or
+        stored under (None: not cached); a request records it rather than hashing the inputs again."""
 
     # ----- building -----------------------------------------------------------------------
 
@@ -234,9 +236,9 @@ class RobotModel(PlacedPart):
         robot comes from the compiled-model cache unless ``cache`` is False, and a compiled one is
         kept there unless ``store`` is False."""
         if self._mjspec is not None:
-            compile = compile_from_store if cache else compile_spec
-            return compile_with_home(self._mjspec, self.assembly_home(), self.describe(), compile)
-        compiled = compile_model(self.build_inputs(), self._assembly, cache=cache, store=store)
+            return compile_home(self._mjspec, self.assembly_home(), self.describe(), meshes=cache)
+        self.entry_key = entry_key(self.build_inputs(), cache)
+        compiled = compile_model(self.entry_key, self._assembly, cache=cache, store=store)
         self._keyframe = compiled.keyframe
         return compiled.model
 
@@ -253,7 +255,8 @@ class RobotModel(PlacedPart):
             model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=stored)
             self._keyframe = Keyframe.of(model)
             return xml
-        compiled, xml = compile_xml(self.build_inputs(), self._assembly, cache, store, meshes)
+        self.entry_key = entry_key(self.build_inputs(), cache)
+        compiled, xml = compile_xml(self.entry_key, self._assembly, cache, store, meshes)
         if compiled is not None:
             self._keyframe = compiled.keyframe
         return xml

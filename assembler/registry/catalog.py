@@ -12,6 +12,8 @@ from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import Any, TypeVar
 
+import yaml
+
 from assembler.errors import AssemblerError, Problem, RegistryError
 from assembler.files.paths import shipped_specs_dir
 from assembler.models import (
@@ -22,9 +24,9 @@ from assembler.models import (
     PartModel,
     source_of,
 )
+from assembler.registry.arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
-    SPEC_SUFFIXES,
     LoadedSpec,
     LocatedDocument,
     Override,
@@ -35,7 +37,7 @@ from assembler.spec.documents import (
 )
 from assembler.spec.documents import apply_overrides as apply_document_overrides
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema import BaseSpec, PartSpec, RobotSpec
+from assembler.spec.schema import SPEC_KINDS, BaseSpec, PartSpec, RobotSpec
 from assembler.spec.spec_files import load_paths, load_string
 
 NAME = FieldPath(("name",))
@@ -82,7 +84,7 @@ def class_from_spec(loaded: LoadedSpec[Any], register: bool = True) -> type[Part
         "spec": spec,
         "loaded": loaded,
         "__doc__": spec.description or f"{kind_of(spec).title()} '{spec.name}' from {loaded.source}.",
-        "__module__": "assembler.specs",
+        "__module__": __name__,  # a module that exists: the one that made the class
     }
     return type(spec.name, (parent_class(spec),), namespace)
 
@@ -150,11 +152,47 @@ def add_spec_folders(folders: Iterable[str | Path]) -> list[type[PartModel]]:
     return register_specs(*folders) if folders else []
 
 
+def _part_specs_beside(files: Sequence[Path]) -> list[Path]:
+    """The part spec files in the folders of ``files``, not recursively, ``files`` left out (scene
+    and experiment files are not parts: their commands read them)."""
+    given = {file.resolve() for file in files}
+    beside = []
+    for folder in dict.fromkeys(file.resolve().parent for file in files):
+        for path in sorted(folder.iterdir()):
+            if not path.name.endswith(SPEC_SUFFIXES) or path.resolve() in given or not path.is_file():
+                continue
+            try:
+                data = yaml.safe_load(path.read_text(encoding="utf-8"))
+            except (OSError, UnicodeDecodeError, yaml.YAMLError):
+                continue  # not ours to report: the file was not asked for
+            if isinstance(data, dict) and data.get("kind", "robot") in SPEC_KINDS:
+                beside.append(path)
+    return beside
+
+
+def register_with_siblings(paths: Sequence[str | Path]) -> list[type[PartModel]]:
+    """Register spec files and folders together with the part specs beside each file, which it may
+    name (``specs/z1_with_gripper.yaml`` naming the gripper of ``specs/z1_gripper.yaml``); return the
+    classes of ``paths`` only. A spec beside it that does not load never blocks it: the paths are
+    then registered alone, and report their own problems."""
+    files = [Path(path) for path in paths if Path(path).is_file()]
+    siblings = _part_specs_beside(files)
+    if not siblings:
+        return register_specs(*paths)
+    try:
+        classes = register_specs(*paths, *siblings)
+    except AssemblerError:
+        return register_specs(*paths)
+    beside = {path.resolve() for path in siblings}
+    return [cls for cls in classes if cls.loaded is None or cls.loaded.document.path not in beside]
+
+
 def classes_named(references: Sequence[str]) -> list[type[PartModel]]:
-    """The parts ``references`` name: spec files and folders (registered together, so they may
-    extend each other), then registered robot, base or gripper names."""
-    paths = [r for r in references if r.endswith(SPEC_SUFFIXES) or Path(r).exists()]
-    classes = register_specs(*paths) if paths else []
+    """The parts ``references`` name: spec files and folders (registered together, with the specs
+    beside each file, so they may extend and name each other), then registered robot, base or
+    gripper names."""
+    paths = [r for r in references if argument_kind(r) is not ArgumentKind.NAME]
+    classes = register_with_siblings(paths) if paths else []
     for name in (r for r in references if r not in paths):
         for table in REGISTRIES.values():
             if name in table:

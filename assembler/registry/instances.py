@@ -15,12 +15,10 @@ from assembler.models import (
     RobotBaseModel,
     RobotModel,
 )
+from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import with_overrides
 from assembler.spec.documents import Overrides
 from assembler.spec.fieldpath import FieldPath
-
-DEFAULT = "default"
-"""Use the robot spec's default base or gripper."""
 
 
 def create_robot(robot_name: str, *args: object, overrides: Overrides = None, **kwargs: object) -> RobotModel:

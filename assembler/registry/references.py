@@ -10,10 +10,10 @@ from collections.abc import Sequence
 
 from assembler.errors import Problem, RegistryError
 from assembler.models import REGISTRIES
-from assembler.spec.documents import SPEC_SUFFIXES, LoadedSpec, LocatedDocument
+from assembler.registry.arguments import DEFAULT, is_spec_file
+from assembler.spec.documents import LoadedSpec, LocatedDocument
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import PartSpec, RobotSpec, SceneRobot
-from assembler.spec.schema.scene import DEFAULT
 
 
 def registry_problem(document: LocatedDocument, path: FieldPath, family: str, name: str) -> list[Problem]:
@@ -47,7 +47,7 @@ def placement_reference_problems(
     problems: list[Problem] = []
     for index, entry in enumerate(robots, start=first_index):
         here = FieldPath(("robots", index))
-        if not entry.robot.endswith(SPEC_SUFFIXES):
+        if not is_spec_file(entry.robot, document.folder):
             problems += registry_problem(document, here.child("robot"), "robot", entry.robot)
         if entry.base not in (None, DEFAULT):
             problems += registry_problem(document, here.child("base"), "base", str(entry.base))

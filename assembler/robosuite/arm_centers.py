@@ -10,13 +10,11 @@ and ``lint`` reports it.
 
 from __future__ import annotations
 
-import warnings
-
 import mujoco
 
-from assembler.errors import AssemblerWarning
 from assembler.models import ManipulatorModel
 from assembler.robosuite.conventions import arm_center_site
+from assembler.spec.fieldpath import FieldPath
 
 
 def arms_without_center(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
@@ -35,11 +33,10 @@ def add_arm_centers(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
         mount.add_site(name=arm_center_site(arm), size=[0.01, 0.01, 0.01], rgba=[1, 0.3, 0.3, 1], group=2)
     missing = [arm_center_site(arm) for arm in arms]
     if missing:
-        warnings.warn(
+        robot.warn(
+            FieldPath((robot.spec.source_field,)),
             f"{robot.spec.name}: robosuite's arm controllers read the site{'s' if len(missing) > 1 else ''} "
             f"{', '.join(missing)}, which "
             "the model file lacks; added for robosuite on the body each arm's first link hangs from (add "
             "them to the model file to place them yourself)",
-            AssemblerWarning,
-            stacklevel=2,
         )

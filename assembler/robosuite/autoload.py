@@ -19,8 +19,8 @@ from pathlib import Path
 
 from assembler.errors import AssemblerWarning, RegistryError
 from assembler.models import ManipulatorModel, PartModel
+from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import register_specs, with_overrides
-from assembler.registry.instances import DEFAULT
 from assembler.robosuite.registries import install, offered
 from assembler.worlds.experiment import build_experiment, read_experiment
 

@@ -24,6 +24,7 @@ import robosuite
 from robosuite.controllers.composite import composite_controller_factory as factory
 
 from assembler.errors import SpecError
+from assembler.files.paths import confine, spec_homes
 from assembler.models import REGISTERED_BASES, ManipulatorModel
 from assembler.robosuite.conventions import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
 from assembler.spec.fieldpath import FieldPath
@@ -107,7 +108,10 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
     if declared.endswith(".json"):
         document = robot_class.loaded.document if robot_class.loaded is not None else None
         folder = document.folder if document is not None and document.folder is not None else Path.cwd()
-        path = folder / declared
+        try:  # the one door for what a spec reads: its folder, its repository's, the trusted ones
+            path = confine(folder / declared, spec_homes(folder), "")
+        except SpecError as error:
+            raise SpecError(robot_class.spec_problem(CONTROLLER, str(error))) from None
         try:
             return flattened(json.loads(path.read_text()))
         except OSError as error:

@@ -13,13 +13,11 @@ process (an :class:`~assembler.errors.AssemblerWarning`) and ``lint`` reports th
 
 from __future__ import annotations
 
-import warnings
-
 import mujoco
 
-from assembler.errors import AssemblerWarning
 from assembler.models import GripperModel
 from assembler.robosuite.conventions import EEF, GRIP_CYLINDER, GRIP_SENSORS, GRIP_SITE, grip_sensors
+from assembler.spec.fieldpath import FieldPath
 
 FT_FRAME = "ft_frame"
 
@@ -61,12 +59,11 @@ def add_grip_frames(gripper: GripperModel, mjspec: mujoco.MjSpec) -> None:
             rgba=[0, 1, 0, 0.3],
             group=1,
         )
-    warnings.warn(
+    gripper.warn(
+        FieldPath(("eef_body",)),
         f"{gripper.spec.name}: robosuite looks a gripper up by {', '.join(missing)}, which its model "
         f"file lacks; added for robosuite (frames at body '{gripper.spec.eef_body}', sensors at its "
         "root body; add them to the model file to place them yourself)",
-        AssemblerWarning,
-        stacklevel=2,
     )
 
 

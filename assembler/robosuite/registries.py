@@ -71,9 +71,10 @@ def registered_class(family: str, name: str) -> type | None:
 
 
 def robosuite_has(family: str, name: str) -> bool:
-    """Whether robosuite itself defines ``name``: its own class is registered under it."""
+    """Whether robosuite itself defines ``name``: its own class is registered under it, or the class of
+    robosuite_models, the companion package robosuite imports itself when it is installed."""
     existing = registered_class(family, name)
-    return existing is not None and existing.__module__.startswith("robosuite.")
+    return existing is not None and existing.__module__.startswith(("robosuite.", "robosuite_models."))
 
 
 def ours(existing: type | None) -> type[PartModel] | None:

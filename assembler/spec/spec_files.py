@@ -14,8 +14,8 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, display_path
+from assembler.registry.arguments import SPEC_SUFFIXES
 from assembler.spec.documents import (
-    SPEC_SUFFIXES,
     LoadedSpec,
     LocatedDocument,
     NoParents,
@@ -29,7 +29,7 @@ from assembler.spec.documents import (
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import SPEC_KINDS, PartSpec
 
-__all__ = ["SPEC_SUFFIXES", "LoadedSpec", "load_documents", "load_paths", "load_string", "spec_files"]
+__all__ = ["LoadedSpec", "load_documents", "load_paths", "load_string", "spec_files"]
 
 KIND = FieldPath(("kind",))
 

@@ -16,20 +16,25 @@ from __future__ import annotations
 
 import os
 import xml.etree.ElementTree as ET
-import xml.parsers.expat
 from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
 from assembler.files.paths import confine, display_path, is_file
-from assembler.urdf.meshes import MeshConversionError, readable_mesh, renamed_copy
+from assembler.mjcf.source import GLOBAL_SECTIONS
+from assembler.urdf.meshes import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
+from assembler.urdf.outline import outline
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 
 FORCED_COMPILER: dict[str, str] = {"discardvisual": "false", "fusestatic": "false", "strippath": "false"}
 """Compiler settings MuJoCo's URDF import needs to keep visual geoms, a fixed base link, and paths."""
 
 DIRECTORY_ATTRIBUTES: tuple[str, ...] = ("meshdir", "texturedir", "assetdir")
+
+EXTENSION_SECTIONS: frozenset[str] = frozenset(GLOBAL_SECTIONS)
+"""Children of a URDF's ``<mujoco>`` element that are read (``<compiler>`` settings are kept, the
+others become the robot's own global sections); any other is ignored, and said to be."""
 
 
 @dataclass(frozen=True)
@@ -67,31 +72,12 @@ class UrdfDocument:
     limited: dict[str, bool] = field(default_factory=dict)
     """Joint -> whether its ``<limit>`` bounds its position (revolute and prismatic with lower < upper)."""
     efforts: dict[str, float] = field(default_factory=dict)
+    ignored: list[tuple[str, int]] = field(default_factory=list)
+    """``(tag, line)`` of each child of ``<mujoco>`` that neither MuJoCo's import nor we read."""
 
 
 MESH_PATHS: tuple[str, ...] = ("link/visual/geometry/mesh", "link/collision/geometry/mesh")
 """Where the meshes MuJoCo reads sit (meshes of ``<gazebo>`` and other tool sections are left alone)."""
-
-
-def _element_lines(data: bytes, paths: Collection[str]) -> dict[str, list[int]]:
-    """The line of every element at one of ``paths`` (below the root), per path, in document order."""
-    lines: dict[str, list[int]] = {path: [] for path in paths}
-    parser = xml.parsers.expat.ParserCreate()
-    stack: list[str] = []
-
-    def start(name: str, _: object) -> None:
-        stack.append(name)
-        here = "/".join(stack[1:])
-        if here in lines:
-            lines[here].append(parser.CurrentLineNumber)
-
-    def end(_: str) -> None:
-        stack.pop()
-
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    parser.Parse(data, True)
-    return lines
 
 
 def _number(text: str | None, default: float) -> float:
@@ -104,11 +90,11 @@ def _number(text: str | None, default: float) -> float:
 class _Reader:
     """Collects the problems of one URDF (each mesh file reported once) while rewriting it."""
 
-    def __init__(self, path: Path, homes: Collection[Path], data: bytes) -> None:
+    def __init__(self, path: Path, homes: Collection[Path], lines: dict[str, list[int]]) -> None:
         self.path = path
         self.shown = display_path(path)
         self.homes = {path.parent, *homes}
-        self.lines = _element_lines(data, (*MESH_PATHS, "joint"))
+        self.lines = lines
         self.problems: list[Problem] = []
         self.resolved: dict[str, str] = {}  # filename as written -> file MuJoCo reads
         self.reported: set[str] = set()
@@ -117,29 +103,41 @@ class _Reader:
     def problem(self, line: int, message: str) -> None:
         self.problems.append(Problem(f"{self.shown}:{line}: {message}"))
 
+    def _confined(self, written: str, line: int, directory: str, document: UrdfDocument) -> Path | None:
+        """The mesh file ``written`` names, confined to its home before its existence is looked at
+        (a refusal is the same whether or not the file exists); None, reported, if it is missing."""
+        where = f"{self.shown}:{line}: mesh "
+        if split_package_uri(written) is not None:
+            found = find_package_file(written, self.path, f"{where}{written}: ")
+            if found is None:
+                self.problem(line, f"mesh {not_found_message(written, self.path)}")
+                return None
+            file, home = found
+            document.homes.add(home)
+            return file
+        name = written.removeprefix("file://")
+        file = confine(
+            Path(name) if os.path.isabs(name) else self.path.parent / directory / name,
+            self.homes,
+            where,
+            MjcfError,
+        )
+        if not is_file(file):
+            self.problem(line, f"mesh file not found: {display_path(file)}")
+            return None
+        return file
+
     def mesh_file(self, written: str, line: int, directory: str, document: UrdfDocument) -> str | None:
         if written in self.resolved:
             return self.resolved[written]
         if written in self.reported:
             return None
         self.reported.add(written)
-        if split_package_uri(written) is not None:
-            found = find_package_file(written, self.path)
-            if found is None:
-                self.problem(line, f"mesh {not_found_message(written, self.path)}")
-                return None
-            file, home = found
-            document.homes.add(home)
-            homes = [*self.homes, home]
-        else:
-            name = written.removeprefix("file://")
-            file = Path(name) if os.path.isabs(name) else self.path.parent / directory / name
-            homes = list(self.homes)
-            if not is_file(file):
-                self.problem(line, f"mesh file not found: {display_path(file)}")
-                return None
         try:
-            file = confine(file, homes, f"{self.shown}:{line}: mesh ", MjcfError)
+            check_mesh_format(Path(written.removeprefix("file://")), f"mesh {written}")  # before any lookup
+            file = self._confined(written, line, directory, document)
+            if file is None:
+                return None
             readable = readable_mesh(file)
         except MjcfError as error:
             self.problems.extend(error.problems)
@@ -205,6 +203,7 @@ def _extension(root: ET.Element, document: UrdfDocument) -> tuple[ET.Element, st
 def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
     """The URDF at ``path`` (its bytes ``data``, already checked) made ready for MuJoCo."""
     shown = display_path(path)
+    found = outline(data, shown, (*MESH_PATHS, "joint"))  # limits and repeated names, before a tree is built
     try:
         root = ET.fromstring(data)
     except ET.ParseError as error:
@@ -213,7 +212,7 @@ def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
         raise MjcfError(f"{shown}: not a URDF file: the root element is <{root.tag}>, expected <robot>")
     document = UrdfDocument(path, "", root.get("name") or path.stem, ET.Element("mujoco"))
     extension, directory = _extension(root, document)
-    reader = _Reader(path, homes, data)
+    reader = _Reader(path, homes, found.lines)
     meshes = [
         (mesh, line)
         for path in MESH_PATHS
@@ -228,5 +227,6 @@ def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
         raise MjcfError(reader.problems)
     _joint_facts(root, reader.lines["joint"], document)
     document.mujoco_element = extension
+    document.ignored = [(tag, line) for tag, line in found.extension if tag not in EXTENSION_SECTIONS]
     document.text = ET.tostring(root, encoding="unicode")
     return document

@@ -12,12 +12,13 @@ holds the file (as ``mjcf:`` does), otherwise a ROS package found as described i
 from __future__ import annotations
 
 import functools
+import warnings
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import mujoco
 
-from assembler.errors import MissingPackageError, MjcfError
+from assembler.errors import AssemblerWarning, MissingPackageError, MjcfError
 from assembler.files.paths import (
     PACKAGE_SCHEME,
     allowed_folders,
@@ -51,11 +52,14 @@ DYNAMICS_ATTRIBUTES: dict[str, str] = {"damping": "damping", "friction": "fricti
 
 
 def _python_package_file(reference: str) -> Path | None:
+    """The file in the installed Python package the reference names, if it holds one; a path out of
+    the package is refused first, so the answer is the same whether or not that file exists."""
     name, _, inner = reference[len(PACKAGE_SCHEME) :].partition("/")
     root = package_root(name) if name.isidentifier() else None
-    if root is None or not is_file(root / inner):
+    if root is None:
         return None
-    return locate_model_file(reference)
+    path = confine(root / inner, [root], f"{reference}: ", MjcfError)
+    return path if is_file(path) else None
 
 
 def locate_urdf_file(reference: str) -> Path:
@@ -65,15 +69,14 @@ def locate_urdf_file(reference: str) -> Path:
     in_python_package = _python_package_file(reference)
     if in_python_package is not None:
         return in_python_package
-    found = find_package_file(reference)
+    found = find_package_file(reference, what=f"{reference}: ")
     if found is None:
         parts = split_package_uri(reference)
         message = not_found_message(reference)
         if parts is not None and " not found " in message:
             raise MissingPackageError(message, parts[0])
         raise MjcfError(message)
-    file, home = found
-    return confine(file, [home], f"{reference}: ", MjcfError)
+    return found[0]  # confined to its package by find_package_file
 
 
 def _globals_xml(document: UrdfDocument) -> str:
@@ -104,8 +107,20 @@ def _authored(spec: mujoco.MjSpec, document: UrdfDocument) -> tuple[Authored, ..
     )
 
 
+def _ignored(document: UrdfDocument) -> list[str]:
+    """One line per child of the URDF's ``<mujoco>`` element that nothing reads."""
+    shown = display_path(document.path)
+    return [
+        f"{shown}:{line}: <mujoco><{tag}> is ignored: a URDF's <mujoco> element gives only "
+        f"{', '.join(f'<{t}>' for t in GLOBAL_SECTIONS)}; say the rest in the spec (actuators:, joints:) "
+        "or in an MJCF file"
+        for tag, line in document.ignored
+    ]
+
+
 def _notes(document: UrdfDocument, balanced: list[str]) -> tuple[str, ...]:
     notes = [f"the URDF's compiler {setting} was replaced" for setting in document.overridden]
+    notes += _ignored(document)
     if balanced:
         notes.append(
             f"balance_inertia: the inertia of {', '.join(balanced)} violated A + B >= C, made isotropic"
@@ -159,6 +174,8 @@ def _load(
     unnamed = [j for j in spec.joints if not j.name and j.type != mujoco.mjtJoint.mjJNT_FREE]
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name")
+    for line in _ignored(document):  # said once per version of the file, as MuJoCo's own warnings are
+        warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))
     return MjcfSource(
         path=path,

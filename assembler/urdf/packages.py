@@ -3,15 +3,20 @@
 ROS resolves ``package://NAME/...`` through its package index; without ROS we look where ROS-style
 packages are installed, in this order (the first folder that holds the file wins):
 
-1. the URDF's own package: the nearest folder above the URDF named ``NAME`` or whose
-   ``package.xml`` declares ``<name>NAME</name>`` (only for URIs inside a URDF);
+1. the packages the spec repository holding the URDF declares (``packages = ["vendor/z1_description"]``
+   in its ``robot-assembler.toml`` or ``[tool.robot-assembler]``; :mod:`assembler.files.repositories`);
 2. ``ROS_PACKAGE_PATH``: each entry that is the package itself or holds it as a sub-folder;
 3. ``AMENT_PREFIX_PATH``: ``<prefix>/share/NAME`` of each prefix (ROS 2);
 4. the Python environment's prefixes: ``<sys.prefix>/share/NAME`` (conda, robostack) and
    ``<site-packages>/cmeel.prefix/share/NAME`` (cmeel wheels such as ``example-robot-data``).
 
+Only these are package roots. A folder is never taken for package ``NAME`` because it is called
+``NAME`` or holds a ``package.xml`` saying so: a stranger's URDF in a checkout named ``lab`` could
+otherwise name ``package://lab/private/token.obj`` and read the whole checkout.
+
 The folder found is the package's home: its files may be read, nothing outside it
-(:func:`assembler.files.paths.confine`).
+(:func:`assembler.files.paths.confine`, checked before the file's existence is looked at, so a
+refusal says nothing about what exists outside).
 """
 
 from __future__ import annotations
@@ -20,12 +25,13 @@ import os
 import re
 import sys
 import sysconfig
-import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
 
+from assembler.errors import MjcfError
 from assembler.files.extras import install_command
-from assembler.files.paths import is_file
+from assembler.files.paths import confine, display_path, is_file
+from assembler.files.repositories import MARKER, find_repository
 
 PACKAGE_SCHEME = "package://"
 
@@ -46,23 +52,10 @@ def split_package_uri(uri: str) -> tuple[str, str] | None:
     return name, inner
 
 
-def _declares(folder: Path, name: str) -> bool:
-    manifest = folder / "package.xml"
-    if not manifest.is_file():
-        return False
-    try:
-        declared = ET.parse(manifest).getroot().findtext("name")
-    except (ET.ParseError, OSError):
-        return False
-    return (declared or "").strip() == name
-
-
-def own_package(urdf: Path, name: str) -> Path | None:
-    """The nearest folder above ``urdf`` that is package ``name`` (by folder name or package.xml)."""
-    for folder in urdf.parents:
-        if folder.name == name or _declares(folder, name):
-            return folder
-    return None
+def declared_package(urdf: Path, name: str) -> Path | None:
+    """The folder of package ``name`` if the spec repository holding ``urdf`` declares it."""
+    repository = find_repository(urdf.parent)
+    return repository.package(name) if repository is not None else None
 
 
 def _environment_prefixes() -> Iterator[Path]:
@@ -78,8 +71,8 @@ def _entries(variable: str) -> list[Path]:
 def package_folders(name: str, urdf: Path | None = None) -> list[Path]:
     """Every existing folder of package ``name``, in the order documented above (no duplicates)."""
     candidates: list[Path] = []
-    if urdf is not None and (own := own_package(urdf, name)) is not None:
-        candidates.append(own)
+    if urdf is not None and (declared := declared_package(urdf, name)) is not None:
+        candidates.append(declared)
     for entry in _entries("ROS_PACKAGE_PATH"):
         candidates += [entry] if entry.name == name else [entry / name]
     candidates += [prefix / "share" / name for prefix in _entries("AMENT_PREFIX_PATH")]
@@ -91,14 +84,17 @@ def package_folders(name: str, urdf: Path | None = None) -> list[Path]:
     return found
 
 
-def find_package_file(uri: str, urdf: Path | None = None) -> tuple[Path, Path] | None:
-    """``(file, package folder)`` for a ``package://`` URI, or None when no package folder holds it."""
+def find_package_file(uri: str, urdf: Path | None = None, what: str = "") -> tuple[Path, Path] | None:
+    """``(file, package folder)`` for a ``package://`` URI, or None when no package folder holds it.
+
+    A path that leaves its package (``..``, a link) is refused (:class:`MjcfError`, ``what`` before
+    the path) whether or not the file it names exists."""
     parts = split_package_uri(uri)
     if parts is None:
         return None
     name, inner = parts
     for folder in package_folders(name, urdf):
-        candidate = folder / inner
+        candidate = confine(folder / inner, [folder], what, MjcfError)
         if is_file(candidate):
             return candidate, folder
     return None
@@ -117,10 +113,31 @@ def not_found_message(uri: str, urdf: Path | None = None) -> str:
     todo = (
         f"install it: {install_command(extra)}"
         if extra
-        else "set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+        else _declare_hint(name, urdf) + "or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
     )
-    where = "the URDF's own folders, " if urdf is not None else ""
+    where = "the packages its spec repository declares, " if urdf is not None else ""
     return (
         f"{uri}: package '{name}' not found (searched {where}ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and "
         f"the share/ folders of this Python environment); {todo}"
     )
+
+
+def _declare_hint(name: str, urdf: Path | None) -> str:
+    """How to declare the package: the exact line when a folder above the URDF looks like package
+    ``name`` (named so, with a package.xml), as a vendor's package beside its URDF does."""
+    general = (
+        f"declare its folder in packages of the spec repository's {MARKER} (README: Spec repositories), "
+    )
+    if urdf is None:
+        return general
+    looks = next((f for f in urdf.parents if f.name == name and os.path.isfile(f / "package.xml")), None)
+    if looks is None:
+        return general
+    repository = find_repository(urdf.parent)
+    if repository is None or not looks.is_relative_to(repository.root):
+        return (
+            f"if {display_path(looks)} is that package, declare it in packages of a {MARKER} at the top of "
+            "your checkout, "
+        )
+    line = f'packages = ["{looks.relative_to(repository.root).as_posix()}"]'
+    return f"if {display_path(looks)} is that package, declare it: {line} in {repository.where}, "

@@ -25,11 +25,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError, Problem
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.urdf.document import Mimic, UrdfDocument
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
-VISUAL_GROUP = 1
-COLLISION_GROUP = 0
 
 
 def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.MjsEquality | None:
@@ -43,9 +42,17 @@ def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.M
 
 
 def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None:
-    """One joint equality per ``<mimic>``; a mimic of a joint that cannot move is an error."""
+    """One joint equality per ``<mimic>``; a mimic of itself or of a joint that cannot move is an error."""
     problems = []
     for mimic in mimics:
+        if mimic.leader == mimic.follower:  # MuJoCo's import drops it without a word
+            problems.append(
+                Problem(
+                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics itself; name another joint in "
+                    "its <mimic joint>, or remove the <mimic>"
+                )
+            )
+            continue
         joints = {name: spec.joint(name) for name in (mimic.follower, mimic.leader)}
         still = [name for name, joint in joints.items() if joint is None or joint.type not in MOVING]
         if still:
@@ -121,16 +128,25 @@ def _moments(body: mujoco.MjsBody) -> tuple[NDArray[np.float64], bool]:
     return np.linalg.eigvalsh(matrix), True
 
 
+def unbalanced_inertias(spec: mujoco.MjSpec) -> list[str]:
+    """The bodies whose given inertia violates A + B >= C (MuJoCo refuses them without balanceinertia)."""
+    return [body.name for body in spec.bodies[1:] if _unbalanced(body)]
+
+
+def _unbalanced(body: mujoco.MjsBody) -> bool:
+    if body.mass <= 0:
+        return False
+    low, middle, high = np.sort(_moments(body)[0])
+    return bool(low + middle < high)
+
+
 def balance_inertias(spec: mujoco.MjSpec) -> list[str]:
     """Make every inertia that violates A + B >= C isotropic at its mean moment; the bodies changed."""
     changed = []
     for body in spec.bodies[1:]:
-        if body.mass <= 0:
+        if not _unbalanced(body):
             continue
         moments, full = _moments(body)
-        low, middle, high = np.sort(moments)
-        if low + middle >= high:
-            continue
         mean = float(np.mean(moments))
         if full:
             body.fullinertia = [mean, mean, mean, 0.0, 0.0, 0.0]

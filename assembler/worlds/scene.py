@@ -15,16 +15,16 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from assembler.cache.mesh_swap import compile_from_store
+from assembler.build.compile import compile_home
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, spec_homes
 from assembler.mjcf import compose
-from assembler.mjcf.keyframe import compile_with_home
 from assembler.models import RobotModel
+from assembler.registry.arguments import is_spec_file
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
 from assembler.registry.references import placement_reference_problems
-from assembler.spec.documents import SPEC_SUFFIXES, LocatedDocument, Override, read_validated
+from assembler.spec.documents import LocatedDocument, Override, read_validated
 from assembler.spec.documents.problems import reading_order
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import SceneRobot, SceneSpec
@@ -55,12 +55,12 @@ class Scene:
         home: dict[str, float] = {}
         for robot in self.robots:
             home.update(robot.assembly_home())
-        return compile_with_home(self.mjspec, home, f"scene '{self.spec.name}'", compile_from_store)
+        return compile_home(self.mjspec, home, f"scene '{self.spec.name}'")
 
 
 def robot_reference(reference: str, folder: Path | None = None) -> str:
     """A registered robot name; a robot spec file (relative to ``folder``) is registered first."""
-    if reference.endswith(SPEC_SUFFIXES):
+    if is_spec_file(reference, folder or Path.cwd()):
         home = folder or Path.cwd()
         # A scene or experiment from a stranger names robot files as a spec names its parents.
         (cls,) = register_specs(confine(home / reference, spec_homes(home), "robot spec "))

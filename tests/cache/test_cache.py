@@ -18,13 +18,11 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler import cache
-from assembler.cache import default_store, wait_for_writes
+from assembler.build import service
+from assembler.build.service import default_store, wait_for_writes
 from assembler.cli import main
 from assembler.files.paths import package_root
-from tests.conftest import use_private_cache
-
-TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
 
 MESH_ARM = """\
 <mujoco model="meshy">
@@ -89,7 +87,7 @@ def mesh_arm(tmp_path: Path) -> Path:
     folder = tmp_path / "arm"
     (folder / "meshes").mkdir(parents=True)
     for name, text in [
-        ("meshes/tet.obj", TETRAHEDRON),
+        ("meshes/tet.obj", TETRAHEDRON_OBJ),
         ("meshy.xml", MESH_ARM),
         ("mesh_arm.yaml", PARENT_SPEC),
         ("mesh_arm_soft.yaml", CHILD_SPEC),
@@ -109,7 +107,7 @@ def edit(path: Path, text: str, seconds_ago: float = 10) -> None:
 
 def lookups() -> tuple[int, int, int]:
     """(hits, misses, bypassed) so far in this process."""
-    return cache.counts.hits, cache.counts.misses, cache.counts.bypassed
+    return service.counts.hits, service.counts.misses, service.counts.bypassed
 
 
 def load(name: str, **kwargs: object) -> mujoco.MjModel:
@@ -201,7 +199,7 @@ def test_touching_a_mesh_without_changing_it_still_hits(mesh_arm: Path) -> None:
 
 def test_editing_a_mesh_is_a_miss_and_the_new_mesh_is_used(mesh_arm: Path) -> None:
     before = load("MeshArm")
-    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.3"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
     after = load("MeshArm")
     assert not np.array_equal(after.mesh_vert, before.mesh_vert)
@@ -215,12 +213,12 @@ def test_repeated_loads_in_one_process_are_independent_and_still_see_edits(mesh_
     second.body_mass[:] = 99.0
     third = load("MeshArm")  # a copy of the kept model
     assert_same_model(third, first)
-    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.3"))
+    edit(mesh_arm / "meshes" / "tet.obj", TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.3"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
 
 
 def test_a_model_from_a_file_edited_a_moment_ago_is_not_stored(mesh_arm: Path, private_cache: Path) -> None:
-    (mesh_arm / "meshes" / "tet.obj").write_text(TETRAHEDRON.replace("v 0 0 0.1", "v 0 0 0.2"))
+    (mesh_arm / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ.replace("v 0 0 0.1", "v 0 0 0.2"))
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
     assert entries(private_cache) == []
 
@@ -346,12 +344,12 @@ def test_a_byte_changed_anywhere_in_an_entry_is_a_miss_never_a_wrong_model(priva
         for file in private_cache.glob("*.mjb"):
             file.unlink()
         model_file.write_bytes(bytes(damaged))
-        cache.service._recent.forget(str(private_cache))  # read from disk, not this process's memory
+        service._recent.forget(str(private_cache))  # read from disk, not this process's memory
         assert counted(lambda: load("Sparrow7")) == (0, 1, 0), position
         assert not model_file.exists()  # the damaged entry is removed
         (model_file,) = private_cache.glob("*.mjb")  # the compile stored a whole one again
     assert len(positions) > 60
-    cache.service._recent.forget(str(private_cache))
+    service._recent.forget(str(private_cache))
     assert counted(lambda: load("Sparrow7")) == (1, 0, 0)
     assert_same_model(load("Sparrow7"), reference)
 
@@ -384,7 +382,7 @@ WORKER = textwrap.dedent(
     """
     import assembler, assembler.cache
     assembler.assemble("Sparrow7").get_model()
-    print(assembler.cache.counts.misses + assembler.cache.counts.hits)
+    print(assembler.build.service.counts.misses + assembler.build.service.counts.hits)
     """
 )
 
@@ -459,7 +457,12 @@ def test_an_included_file_edited_between_two_robots_is_read_again(mesh_arm: Path
     edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="1 0 0 1"/></default></mujoco>', 3600)
     edit(mesh_arm / "meshy.xml", MESH_ARM.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'), 3600)
     assembler.register_specs(mesh_arm)
-    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.5, 0.0, 1.0]  # recoloured
+    assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [
+        1.0,
+        0.0,
+        0.0,
+        1.0,
+    ]  # the included default's
     edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="0 0 1 1" group="1"/></default></mujoco>', 30)
     assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [0.0, 0.0, 1.0, 1.0]
 
@@ -473,11 +476,11 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         package = tmp_path / install / "fakebot"
         (package / "meshes").mkdir(parents=True)
         (package / "__init__.py").write_text("")
-        edit(package / "meshes" / "tet.obj", TETRAHEDRON, 3600)
+        edit(package / "meshes" / "tet.obj", TETRAHEDRON_OBJ, 3600)
         edit(package / "robot.xml", MESH_ARM.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
             "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "
-            "m = assembler.assemble(cls.__name__).get_model(); assembler.cache.wait_for_writes(); "
+            "m = assembler.assemble(cls.__name__).get_model(); assembler.build.service.wait_for_writes(); "
             "print(m.geom('robot0_base_col').size[0])"
         )
         environment = {

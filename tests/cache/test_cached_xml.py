@@ -12,13 +12,13 @@ from pathlib import Path
 import pytest
 
 import assembler
-from assembler import cache
-from assembler.cache import default_store, wait_for_writes
+from assembler.build import service
+from assembler.build.service import default_store, wait_for_writes
 from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.files.paths import package_root
 from assembler.mjcf.emit import to_xml
-from tests.conftest import use_private_cache
+from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
 
 ROBOSUITE = package_root("robosuite") is not None
 needs_robosuite = pytest.mark.skipif(not ROBOSUITE, reason="robosuite is not installed")
@@ -55,9 +55,9 @@ def test_the_stored_xml_is_byte_for_byte_a_fresh_emission(name: str) -> None:
     expected = fresh_xml(name)
     first = assembler.assemble(name).get_xml()  # compiled once, emitted from that spec, kept
     wait_for_writes()
-    hits = cache.counts.hits
+    hits = service.counts.hits
     second = assembler.assemble(name).get_xml()  # from the entry
-    assert cache.counts.hits == hits + 1
+    assert service.counts.hits == hits + 1
     assert first == expected and second == expected
 
 
@@ -69,8 +69,6 @@ def test_xml_emitted_with_stored_meshes_is_the_same_text() -> None:
     expected = fresh_xml("Panda")
     assert assembler.assemble("Panda").get_xml() == expected
 
-
-TETRAHEDRON = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
 MESH_ARM = """\
 <mujoco model="meshy">
@@ -95,7 +93,7 @@ def test_xml_emitted_with_meshes_from_the_mesh_store_is_the_same_text(tmp_path: 
     """Without robosuite too: an OBJ mesh used twice, read from the mesh store by both compiles."""
     folder = tmp_path / "arm"
     (folder / "meshes").mkdir(parents=True)
-    (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON)
+    (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ)
     (folder / "meshy.xml").write_text(MESH_ARM)
     (folder / "mesh_arm.yaml").write_text("name: MeshArm\nmjcf: meshy.xml\n")
     for path in [*folder.rglob("*"), folder]:
@@ -115,9 +113,9 @@ def test_a_damaged_xml_file_is_a_miss_and_is_replaced() -> None:
     damaged = bytearray((folder / xml).read_bytes())
     damaged[len(damaged) // 2] ^= 1
     (folder / xml).write_bytes(bytes(damaged))
-    misses = cache.counts.misses
+    misses = service.counts.misses
     assert assembler.assemble("Sparrow7").get_xml() == expected
-    assert cache.counts.misses == misses + 1
+    assert service.counts.misses == misses + 1
     wait_for_writes()
     _, _, replaced = entry_of("Sparrow7")
     assert not (folder / xml).exists() and replaced != xml and (folder / replaced).read_text() == expected
@@ -149,7 +147,7 @@ def test_clearing_the_cache_removes_the_xml_files_too() -> None:
     wait_for_writes()
     folder, _, xml = entry_of("Sparrow7")
     assert (folder / xml).exists()
-    cache.clear(default_store())
+    service.clear(default_store())
     assert not list(folder.glob("*.xml"))
 
 

@@ -22,7 +22,6 @@ import assembler
 out = Path(sys.argv[1])
 for name in sys.argv[2:]:
     robot = assembler.assemble(name, idn="d1")
-    robot.use_cache = False
     robot.set_base_xpos(np.array([0.3, -0.2, 0.1]))
     robot.set_base_ori(np.array([0.3, -0.5, 1.2]))
     (out / f"{name}.xml").write_bytes(robot.get_xml().encode())
@@ -31,7 +30,8 @@ for name in sys.argv[2:]:
 
 def _start(folder: Path, seed: str, cache: Path) -> subprocess.Popen[str]:
     folder.mkdir()
-    env = dict(os.environ, PYTHONHASHSEED=seed, ASSEMBLER_CACHE_DIR=str(cache))
+    # Each process compiles and emits (no cache answers for it), into a cache folder of its own.
+    env = dict(os.environ, PYTHONHASHSEED=seed, ASSEMBLER_CACHE_DIR=str(cache), ASSEMBLER_NO_CACHE="1")
     command = [sys.executable, "-c", BUILD, str(folder), *ROBOTS]
     return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 

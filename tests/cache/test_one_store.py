@@ -24,7 +24,8 @@ import pytest
 
 import assembler
 from assembler import cache
-from assembler.cache import wait_for_writes
+from assembler.build import service
+from assembler.build.service import wait_for_writes
 from assembler.cache.content import PARTS, content_folder
 from assembler.cli import main
 from assembler.robosuite.files import kept_file, written_file
@@ -184,14 +185,14 @@ def test_a_re_pointed_symlinked_asset_folder_is_a_miss(folder: Path) -> None:
 def test_switching_the_package_variables_is_a_miss(folder: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     assembler.register_specs(folder / "arm.yaml")
     for variable in ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH"):
-        before = (cache.counts.hits, cache.counts.misses)
+        before = (service.counts.hits, service.counts.misses)
         monkeypatch.setenv(variable, str(folder / "one"))
         assembler.create_robot("StoreArm").get_model()
         wait_for_writes()
         assembler.create_robot("StoreArm").get_model()
         monkeypatch.setenv(variable, str(folder / "two"))
         assembler.create_robot("StoreArm").get_model()
-        assert (cache.counts.hits - before[0], cache.counts.misses - before[1]) == (1, 2), variable
+        assert (service.counts.hits - before[0], service.counts.misses - before[1]) == (1, 2), variable
 
 
 def test_an_edited_robosuite_part_file_is_written_again(folder: Path) -> None:

@@ -14,8 +14,9 @@ from pathlib import Path
 import pytest
 
 import assembler
+from assembler.build.repeat import _record_of, keyed
+from assembler.build.service import wait_for_writes
 from assembler.cache import requests as request_records
-from assembler.cache import wait_for_writes
 from assembler.cache.requests import default_request_store, request_key
 from assembler.cli import main
 from tests.conftest import use_private_cache
@@ -82,8 +83,6 @@ def records() -> int:
 
 def answered(name: str, folder: Path, **kwargs: object) -> bool:
     """Whether ``load_model`` would answer from a record now (nothing is loaded)."""
-    from assembler.cache.repeat import _record_of
-
     request = {
         "kind": "load_model",
         "robot": name,
@@ -93,7 +92,7 @@ def answered(name: str, folder: Path, **kwargs: object) -> bool:
         "overrides": kwargs.get("overrides"),
         "specs": [str(folder.resolve())],
     }
-    return _record_of(request) is not None
+    return _record_of(keyed(request)) is not None
 
 
 def test_a_repeated_request_is_answered_from_its_record(arms: Path) -> None:
@@ -182,7 +181,7 @@ def test_a_spec_registered_as_text_is_never_recorded(arms: Path) -> None:
 def test_requests_in_environments_with_another_package_location_do_not_share_records(tmp_path: Path) -> None:
     edit(tmp_path / "fake.yaml", "name: FakeBot\nmjcf: package://fakebot/robot.xml\n", 3600)
     script = (
-        "import sys, assembler; m = assembler.load_model(sys.argv[1]); assembler.cache.wait_for_writes(); "
+        "import sys, assembler; m = assembler.load_model(sys.argv[1]); assembler.build.service.wait_for_writes(); "
         "print(m.geom('robot0_base_col').size[0], 'assembler.registry.catalog' in sys.modules)"
     )
     seen = []

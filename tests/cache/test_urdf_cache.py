@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler import cache
-from assembler.cache import wait_for_writes
+from assembler.build import service
+from assembler.build.service import wait_for_writes
 from assembler.urdf.meshes import converted_dir, converter_available, importable
 from tests.conftest import use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package, write_stl
@@ -54,9 +54,9 @@ def _load() -> mujoco.MjModel:
 
 def _counted(action: Callable[[], object]) -> tuple[int, int]:
     """(hits, misses) that ``action`` caused."""
-    before = (cache.counts.hits, cache.counts.misses)
+    before = (service.counts.hits, service.counts.misses)
     action()
-    return cache.counts.hits - before[0], cache.counts.misses - before[1]
+    return service.counts.hits - before[0], service.counts.misses - before[1]
 
 
 STL_ONLY = ARM_URDF.replace("cube.dae", "cube.stl")

@@ -3,6 +3,7 @@ folders the user allowed; MJCF is refused before parsing when it declares a DTD 
 
 from __future__ import annotations
 
+import importlib
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -13,7 +14,7 @@ import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError, SpecError
 from assembler.files.paths import ALLOW_VARIABLE, allow_paths
-from tests.conftest import TWO_LINK_MJCF
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
 Write = Callable[[str, str], Path]
 
@@ -28,7 +29,6 @@ MESH_MJCF = """\
   </worldbody>
 </mujoco>
 """
-TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
 
 @pytest.fixture(autouse=True)
@@ -63,13 +63,29 @@ def test_absolute_mjcf_path_outside_is_refused(write: Write) -> None:
     assert str(caught.value) == f"{spec}:2:7: mjcf: {target} {OUTSIDE}"
 
 
-def test_a_file_that_appears_outside_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+def test_a_missing_file_outside_is_refused_as_an_existing_one_is(write: Write, tmp_path: Path) -> None:
+    # No existence oracle: a stranger's spec must not learn which files exist outside by the message.
     spec = write("specs/arm.yaml", "name: Arm\nmjcf: ../outside/twolink.xml\n")
-    (cls,) = assembler.register_specs(spec)  # nothing there yet: nothing to refuse
-    write("outside/twolink.xml", TWO_LINK_MJCF)
+    messages = []
+    for exists in (False, True):
+        if exists:
+            write("outside/twolink.xml", TWO_LINK_MJCF)
+        with pytest.raises(SpecError) as caught:
+            assembler.register_specs(spec)
+        messages.append(str(caught.value))
+    assert messages == [f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"] * 2
+
+
+def test_a_file_linked_out_after_loading_is_refused_when_read(write: Write, tmp_path: Path) -> None:
+    inside = write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n")
+    (cls,) = assembler.register_specs(spec)
+    target = write("outside/twolink.xml", TWO_LINK_MJCF)
+    inside.unlink()
+    inside.symlink_to(target)  # re-pointed between loading and reading
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
-    assert str(caught.value) == f"{spec}:2:7: mjcf: {tmp_path}/outside/twolink.xml {OUTSIDE}"
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {inside} (a link to {target}) {OUTSIDE}"
 
 
 def test_a_symbolic_link_leading_out_is_refused_and_named(write: Write, tmp_path: Path) -> None:
@@ -108,7 +124,7 @@ def test_parent_spec_outside_is_refused(write: Write) -> None:
 def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
     write: Write, tmp_path: Path, meshdir: str, file: str
 ) -> None:
-    write("outside/tetra.obj", TETRA)
+    write("outside/tetra.obj", TETRAHEDRON_OBJ)
     write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir=meshdir, file=file.format(tmp=tmp_path)))
     (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
     with pytest.raises(MjcfError) as caught:
@@ -120,7 +136,7 @@ def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
 
 
 def test_meshes_anywhere_below_the_spec_folder_are_fine(write: Write) -> None:
-    write("specs/meshes/tetra.obj", TETRA)  # beside the MJCF's folder, not below it
+    write("specs/meshes/tetra.obj", TETRAHEDRON_OBJ)  # beside the MJCF's folder, not below it
     write("specs/robot/meshy.xml", MESH_MJCF.format(meshdir="../meshes", file="tetra.obj"))
     (cls,) = assembler.register_specs(write("specs/meshy.yaml", "name: Meshy\nmjcf: robot/meshy.xml\n"))
     assert cls(idn=0).get_model().nmesh == 1
@@ -141,6 +157,11 @@ def test_allow_paths_in_python_admits_a_folder(write: Write, tmp_path: Path) -> 
             "package://robosuite/" + "../" * 30 + "etc/hostname",
             "package://robosuite/" + "../" * 30 + "etc/hostname: /etc/hostname " + OUTSIDE,
             id="dotdot-out-of-the-package",
+        ),
+        pytest.param(  # the same line for a file that does not exist: no existence oracle
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file",
+            "package://robosuite/" + "../" * 30 + "etc/no-such-file: /etc/no-such-file " + OUTSIDE,
+            id="dotdot-out-of-the-package-to-a-missing-file",
         ),
         pytest.param(
             "package://os.path/x.xml",
@@ -202,7 +223,7 @@ def test_files_read_while_parsing_are_confined_too(
     write: Write, tmp_path: Path, element: str, target: str
 ) -> None:
     write("outside/part.xml", "<mujoco/>")
-    write("outside/tetra.obj", TETRA)
+    write("outside/tetra.obj", TETRAHEDRON_OBJ)
     write("specs/twolink.xml", TWO_LINK_MJCF.replace("<worldbody>", f"{element}\n  <worldbody>", 1))
     (cls,) = assembler.register_specs(write("specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\n"))
     with pytest.raises(MjcfError) as caught:
@@ -252,4 +273,30 @@ def test_shipped_specs_build_from_another_working_directory(
     assert _build(["build", "Sparrow7", "--base", "QuadrupedBase", "-o", "out.xml"], capsys) == (
         0,
         ["wrote out.xml"],
+    )
+
+
+def test_a_controller_file_a_spec_names_is_confined_too(write: Write, tmp_path: Path) -> None:
+    pytest.importorskip("robosuite")
+    controllers = importlib.import_module("assembler.robosuite.controllers")  # imports robosuite
+    write("outside/ctrl.json", '{"type": "BASIC", "body_parts": {}}')
+    write("specs/twolink.xml", TWO_LINK_MJCF)
+    spec = write(
+        "specs/arm.yaml", "name: Arm\nmjcf: twolink.xml\nrobosuite:\n  controller: ../outside/ctrl.json\n"
+    )
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(SpecError) as caught:
+        controllers.declared_config(cls)
+    assert str(caught.value) == f"{spec}:4:15: robosuite.controller: {tmp_path}/outside/ctrl.json {OUTSIDE}"
+
+
+def test_mjcf_declaring_an_unknown_encoding_is_one_line(write: Write, tmp_path: Path) -> None:
+    # expat raises LookupError, not ExpatError, for it: a traceback before issue 23.
+    write("specs/enc.xml", '<?xml version="1.0" encoding="no-such"?>\n' + TWO_LINK_MJCF)
+    (cls,) = assembler.register_specs(write("specs/enc.yaml", "name: Enc\nmjcf: enc.xml\n"))
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0).check()
+    assert str(caught.value) == (
+        f"{tmp_path}/specs/enc.yaml:2:7: mjcf: {tmp_path}/specs/enc.xml: not well-formed XML: "
+        "unknown encoding: no-such"
     )

@@ -15,8 +15,8 @@ from assembler.cli import main
 from assembler.errors import MjcfError, RegistryError, SpecError
 from assembler.files.paths import ALLOW_VARIABLE, shipped_assets_dir, shipped_specs_dir
 from assembler.registry.lookup import REGISTERED_ROBOTS
-from tests.conftest import TWO_LINK_MJCF
-from tests.files.test_confinement import MESH_MJCF, OUTSIDE, TETRA
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
+from tests.files.test_confinement import MESH_MJCF, OUTSIDE
 
 Write = Callable[[str, str], Path]
 
@@ -87,7 +87,7 @@ def test_a_declaration_above_the_checkout_is_not_its_own(write: Write, tmp_path:
 
 
 def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: Path) -> None:
-    write("lab/secrets/tetra.obj", TETRA)
+    write("lab/secrets/tetra.obj", TETRAHEDRON_OBJ)
     write("lab/assets/arm/meshy.xml", MESH_MJCF.format(meshdir="../../secrets", file="tetra.obj"))
     spec = write("lab/specs/meshy.yaml", "name: Meshy\nmjcf: ../assets/arm/meshy.xml\n")
     marker = write("lab/robot-assembler.toml", "")
@@ -139,12 +139,23 @@ def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: 
         ),
         pytest.param(
             'allow = "assets"\n',
-            '{marker}: allow must be a list of folder names, e.g. allow = ["allow"]',
+            '{marker}: allow must be a list of folder names, e.g. allow = ["meshes"]',
             id="not-a-list",
         ),
         pytest.param(
+            'packages = "vendor"\n',
+            '{marker}: packages must be a list of folder names, e.g. packages = ["vendor/z1_description"]',
+            id="packages-not-a-list",
+        ),
+        pytest.param(
+            'packages = ["exit"]\n',
+            "{marker}: packages: 'exit' leads to {tmp}/outside, outside the repository {tmp}/lab; a spec "
+            "repository may only open its own folders to its specs",
+            id="package-linking-out",
+        ),
+        pytest.param(
             'alow = ["assets"]\n',
-            "{marker}: unknown key 'alow'. Did you mean 'allow'? Valid keys: specs, assets, allow",
+            "{marker}: unknown key 'alow'. Did you mean 'allow'? Valid keys: specs, assets, allow, packages",
             id="unknown-key",
         ),
     ],
@@ -262,3 +273,38 @@ def test_the_same_spec_in_two_user_folders_registers_once(write: Write) -> None:
     (cls,) = assembler.register_specs(second)
     assert REGISTERED_ROBOTS["TwoLink"] is cls and cls.loaded is not None
     assert cls.loaded.document.path == second
+
+
+@pytest.mark.parametrize(
+    ("manifests", "message"),
+    [
+        pytest.param(
+            {
+                "vendor/a": '<?xml version="1.0"?><!DOCTYPE p [<!ENTITY n "a">]><package><name>&n;</name></package>'
+            },
+            "{tmp}/lab/vendor/a/package.xml: a document type declaration (<!DOCTYPE ...>) is not allowed: "
+            "XML entities are declared there and their expansion is unbounded; remove it",
+            id="package-xml-with-a-doctype",
+        ),
+        pytest.param(
+            {
+                "vendor/a": "<package><name>arm</name></package>",
+                "vendor/b": "<package><name>arm</name></package>",
+            },
+            "{marker}: packages: {tmp}/lab/vendor/a and {tmp}/lab/vendor/b are both package 'arm'; declare "
+            "one of them",
+            id="two-folders-of-one-package",
+        ),
+    ],
+)
+def test_a_declared_package_is_named_by_its_package_xml_read_safely(
+    write: Write, tmp_path: Path, manifests: dict[str, str], message: str
+) -> None:
+    for folder, manifest in manifests.items():
+        write(f"lab/{folder}/package.xml", manifest)
+    declared = ", ".join(f'"{folder}"' for folder in manifests)
+    spec = lab(write, ("robot-assembler.toml", f"packages = [{declared}]\n"))
+    marker = tmp_path / "lab" / "robot-assembler.toml"
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(spec)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: " + message.format(marker=marker, tmp=tmp_path)

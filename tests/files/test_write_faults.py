@@ -16,7 +16,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.files import writing
-from tests.conftest import TWO_LINK_MJCF
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
 """The ``assembler`` command, run by this Python in a new process."""
@@ -150,14 +150,13 @@ STRANGE_NAMES_MJCF = """\
   </worldbody>
 </mujoco>
 """
-TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
 
 def test_a_bundle_writes_only_plain_names_inside_its_folder(tmp_path: Path) -> None:
     robot = tmp_path / "robot"
     robot.mkdir()
     for name in ("..tetra.obj", "we ird$(name).obj", ".hidden.obj"):
-        (robot / name).write_text(TETRA)
+        (robot / name).write_text(TETRAHEDRON_OBJ)
     (robot / "strange.xml").write_text(STRANGE_NAMES_MJCF)
     (robot / "strange.yaml").write_text("name: Strange\nmjcf: strange.xml\n")
     assert main(["build", str(robot / "strange.yaml"), "--bundle", str(tmp_path / "bundle")]) == 0
@@ -198,9 +197,7 @@ def test_a_bundle_that_fails_leaves_no_folder_and_no_file_behind(
 
     robot = tmp_path / "robot"
     robot.mkdir()
-    (robot / "tet.obj").write_text(
-        "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
-    )
+    (robot / "tet.obj").write_text(TETRAHEDRON_OBJ)
     mjcf = TWO_LINK_MJCF.replace("<worldbody>", '<asset><mesh name="tet" file="tet.obj"/></asset><worldbody>')
     mjcf = mjcf.replace(
         '<geom name="base_col"', '<geom type="mesh" mesh="tet" group="1"/><geom name="base_col"'
@@ -220,7 +217,7 @@ def test_cache_clear_says_what_it_could_not_remove(
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     assert main(["build", "Sparrow7", "-o", str(tmp_path / "a.xml")]) == 0
-    assembler.cache.wait_for_writes()
+    assembler.build.service.wait_for_writes()
     real_unlink = Path.unlink
 
     def read_only(path: Path, missing_ok: bool = False) -> None:
@@ -245,4 +242,5 @@ def test_cache_info_says_when_the_cache_cannot_be_used(
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "a-file" / "cache"))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     assert main(["cache", "info"]) == 0
-    assert f"status    unusable: {tmp_path / 'a-file'} is a file, not a folder" in capsys.readouterr().out
+    (status,) = [line for line in capsys.readouterr().out.splitlines() if line.startswith("status ")]
+    assert status.split(None, 1)[1] == f"unusable: {tmp_path / 'a-file'} is a file, not a folder"

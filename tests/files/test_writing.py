@@ -17,7 +17,7 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from assembler.cache import wait_for_writes
+from assembler.build.service import wait_for_writes
 from assembler.cli import main
 from tests.conftest import use_private_cache
 

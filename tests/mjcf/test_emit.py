@@ -12,6 +12,7 @@ import pytest
 import assembler
 from assembler.errors import MjcfError
 from assembler.files.writing import write_atomically
+from tests.conftest import TETRAHEDRON_OBJ
 
 MESH_ROBOT = """\
 <mujoco model="meshy">
@@ -32,8 +33,7 @@ MESH_ROBOT = """\
 </mujoco>
 """
 
-TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
-TETRA_BIG = TETRA.replace("0.1", "0.2")
+TETRA_BIG = TETRAHEDRON_OBJ.replace("0.1", "0.2")
 
 
 def _png(path: Path) -> None:
@@ -59,7 +59,7 @@ def _png(path: Path) -> None:
 
 @pytest.fixture
 def meshy(write) -> type[assembler.RobotModel]:  # type: ignore[no-untyped-def]
-    write("robot/meshes/tetra.obj", TETRA)
+    write("robot/meshes/tetra.obj", TETRAHEDRON_OBJ)
     write("robot/meshes/sub/tetra.obj", TETRA_BIG)
     _png(Path(write("robot/textures/.keep", "")).parent / "grid.png")
     write("robot/meshy.xml", MESH_ROBOT)

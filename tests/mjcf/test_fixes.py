@@ -107,14 +107,81 @@ def test_a_set_that_the_file_already_has_is_a_stale_repair(write: Callable[[str,
 def test_a_repair_must_say_exactly_one_thing(write: Callable[[str, str], Path]) -> None:
     two_actions = "mjcf_fixes:\n  - element: default\n    remove: [group]\n    set: {a: b}\n    why: two actions at once\n"
     with pytest.raises(
-        SpecError, match=r"mjcf_fixes\[0\].*give exactly one of keep_first_of_repeated_names, remove, set"
+        SpecError,
+        match=r"mjcf_fixes\[0\].*give exactly one of keep_first_of_repeated_names, remove, set, delete",
     ):
         _gripper(write, two_actions)
 
 
-def test_repairs_are_refused_on_a_file_with_includes(write: Callable[[str, str], Path]) -> None:
-    write("parts.xml", "<mujoco><default><geom rgba='1 0 0 1'/></default></mujoco>")
-    write("flawed.xml", FLAWED_GRIPPER.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'))
+def test_repairs_apply_to_the_files_a_file_includes(write: Callable[[str, str], Path]) -> None:
+    included = (
+        FLAWED_GRIPPER.split("<worldbody>")[0].replace('<mujoco model="flawed">', "<mujoco>") + "</mujoco>"
+    )
+    write("parts.xml", included)
+    main = FLAWED_GRIPPER.split("<asset>")[0] + '<include file="parts.xml"/>\n  <worldbody>'
+    write("flawed.xml", main + FLAWED_GRIPPER.split("<worldbody>")[1])
     (cls,) = assembler.register_specs(write("flawed.yaml", SPEC.format(fixes=ALL_FIXES)))
-    with pytest.raises(MjcfError, match=r"mjcf_fixes cannot be used on a file that includes other files"):
+
+    model = cls(idn=0).compile_alone()
+
+    assert model.nmesh == 1  # the repeated mesh name and the <default> attribute were in parts.xml
+    assert model.dof_damping[0] == pytest.approx(0.5)
+
+
+FETCH_LIKE = """\
+<mujoco model="fetchish">
+  <worldbody>
+    <body name="robot0:mocap" mocap="true" pos="0 0 0.5">
+      <geom type="box" size="0.005 0.005 0.005" contype="0" conaffinity="0" rgba="0 0.5 0 0.7"/>
+    </body>
+    <body name="base">
+      <geom type="box" size="0.1 0.1 0.1" mass="5"/>
+      <body name="link" pos="0 0 0.2">
+        <joint name="lift" axis="0 0 1" range="-1 1"/>
+        <geom type="box" size="0.05 0.05 0.05" mass="1"/>
+        <body name="right_hand" pos="0 0 0.1"/>
+      </body>
+    </body>
+  </worldbody>
+  <equality>
+    <weld body1="robot0:mocap" body2="right_hand" solref="0.02 1"/>
+  </equality>
+</mujoco>
+"""
+"""As gymnasium-robotics' Fetch: a mocap body beside the robot, welded to its hand."""
+
+CUT_MOCAP = """\
+mjcf_fixes:
+  - element: body
+    where: {name: "robot0:mocap"}
+    delete: true
+    why: the mocap body drives the hand in gymnasium's tasks; robosuite's controllers drive the joints
+  - element: weld
+    where: {body1: "robot0:mocap"}
+    delete: true
+    why: the weld holds the hand to the mocap body deleted above
+"""
+
+
+def test_a_repair_deletes_the_elements_it_selects(write: Callable[[str, str], Path]) -> None:
+    write("fetchish.xml", FETCH_LIKE)
+    spec = f"name: Fetchish\nmjcf: fetchish.xml\n{CUT_MOCAP}"
+    (cls,) = assembler.register_specs(write("fetchish.yaml", spec))
+
+    model = cls(idn=0).get_model(cache=False)
+
+    assert [model.body(b).name for b in range(model.nbody)] == [
+        "world",
+        "robot0_base",
+        "robot0_link",
+        "robot0_right_hand",
+    ]
+    assert model.neq == 0 and model.nmocap == 0
+
+
+def test_a_deletion_that_selects_nothing_is_a_stale_repair(write: Callable[[str, str], Path]) -> None:
+    write("fetchish.xml", FETCH_LIKE)
+    spec = f"name: Fetchish\nmjcf: fetchish.xml\n{CUT_MOCAP.replace('body1', 'body2')}"
+    (cls,) = assembler.register_specs(write("fetchish.yaml", spec))
+    with pytest.raises(MjcfError, match=r"mjcf_fixes on <weld> changed nothing"):
         cls(idn=0).check()

@@ -15,6 +15,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import MjcfError
+from tests.conftest import TETRAHEDRON_OBJ
 from tests.models.semantics_robots import skin_file
 
 ASSET, BODY, SECTIONS = "ASSET", "BODY", "SECTIONS"
@@ -55,7 +56,6 @@ ROBOT = """\
 """
 """A valid robot with two hinge joints."""
 
-CUBE_OBJ = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
 REPAIR_HINT = " (a spec can declare a repair: mjcf_fixes)"
 
@@ -69,7 +69,7 @@ def _robot_folder(folder: Path, slot: str, element: str) -> Path:
     text = ROBOT
     for place in (ASSET, BODY, SECTIONS):
         text = text.replace(place, element if place == slot else "")
-    (folder / "cube.obj").write_text(CUBE_OBJ)
+    (folder / "cube.obj").write_text(TETRAHEDRON_OBJ)
     (folder / "robot.xml").write_text(text)
     spec = folder / "robot.yaml"
     spec.write_text("name: Probe\nmjcf: robot.xml\n")

@@ -34,7 +34,7 @@ def test_mount_is_merged_into_the_robot_root_at_the_offset(parts: Path) -> None:
     # bottom offset: mount root pos (-0.5) - top offset (-0.01) + robot root pos (0.1)
     np.testing.assert_allclose(robot.bottom_offset, [0, 0, -0.39])
     assert robot.horizontal_radius == 0.5  # max(robot 0.5, mount 0.3)
-    assert model.geom("fixed_mount0_post_col").rgba.tolist() == [0.5, 0.5, 0.0, 1.0]
+    assert model.geom("fixed_mount0_post_col").rgba.tolist() == [0.5, 0.5, 0.5, 1.0]  # the file's
 
 
 def test_mobile_base_goes_between_the_root_and_the_arm(parts: Path) -> None:

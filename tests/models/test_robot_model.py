@@ -43,8 +43,14 @@ def test_names_dof_and_lists(robot: assembler.RobotModel) -> None:
     assert robot.all_joints == robot.joints and robot.models == []
 
 
-def test_collision_geoms_take_the_contact_colour(robot: assembler.RobotModel) -> None:
+def test_collision_geoms_keep_the_files_colour_unless_the_spec_asks_for_robosuites(
+    robot: assembler.RobotModel, two_link: Path
+) -> None:
     model = robot.get_model()
+    assert model.geom("robot3_link1_col").rgba.tolist() == [0.5, 0.5, 0.5, 1.0]  # MuJoCo's default grey
+    two_link.write_text(two_link.read_text() + "collision_colour: robosuite\n")
+    (cls,) = assembler.register_specs(two_link)
+    model = cls(idn=3).get_model()
     assert model.geom("robot3_link1_col").rgba.tolist() == [0.0, 0.5, 0.0, 1.0]
     assert model.geom("robot3_link1_vis").rgba.tolist() == [1.0, 1.0, 1.0, 1.0]
 

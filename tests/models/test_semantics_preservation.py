@@ -18,8 +18,9 @@ import numpy as np
 import pytest
 
 import assembler
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP
 from assembler.mjcf.versions import mujoco_at_least
-from assembler.models.part import COLLISION_GROUP, PartModel
+from assembler.models.part import PartModel
 from tests.models.semantics_robots import CASES, CUBE_OBJ, SLEEVE_SKN, robot_mjcf
 
 PREFIX = "robot0_"
@@ -30,7 +31,6 @@ EXCLUDED: dict[str, str] = {
     r"nbuffer": "the size of the buffer holding the (longer) names and paths",
     r"nkey|key_\w+": "the file's keyframes give way to the assembly's one 'home' keyframe (issue #2102)",
     r"signature": "MuJoCo's checksum of the whole model, which covers the names and keyframes above",
-    r"geom_rgba|geom_matid": "collision geoms (group 0) are recoloured as in robosuite; compared row by row",
 }
 """Fields outside the generic comparison (a regular expression of names) and why."""
 
@@ -119,12 +119,15 @@ CASE_NAMES = [
 ]
 
 
-def _compile_both(folder: Path, name: str) -> tuple[mujoco.MjModel, mujoco.MjModel, PartModel]:
+def _compile_both(
+    folder: Path, name: str, more_spec: str = ""
+) -> tuple[mujoco.MjModel, mujoco.MjModel, PartModel]:
     (folder / "cube.obj").write_text(CUBE_OBJ)
     (folder / "sleeve.skn").write_bytes(SLEEVE_SKN)
     (folder / "robot.xml").write_text(robot_mjcf(name))
     (folder / "robot.yaml").write_text(
         "name: Case\nmjcf: robot.xml\njoint_defaults: {frictionloss: null, damping: null, armature: null}\n"
+        + more_spec
     )
     (cls,) = assembler.register_specs(folder / "robot.yaml")
     robot = cls(idn=0)
@@ -173,8 +176,8 @@ def _path(model: mujoco.MjModel, field: str, index: int) -> str:
 
 
 @pytest.mark.parametrize("name", ["materials-and-textures", "meshes", "default-classes", "frames"])
-def test_only_collision_geoms_are_recoloured(tmp_path: Path, name: str) -> None:
-    ours, theirs, robot = _compile_both(tmp_path, name)
+def test_robosuites_collision_colour_recolours_only_collision_geoms(tmp_path: Path, name: str) -> None:
+    ours, theirs, robot = _compile_both(tmp_path, name, "collision_colour: robosuite\n")
     collision = theirs.geom_group == COLLISION_GROUP
     assert collision.any() and (~collision).any()
     assert np.array_equal(ours.geom_rgba[~collision], theirs.geom_rgba[~collision])
@@ -183,6 +186,17 @@ def test_only_collision_geoms_are_recoloured(tmp_path: Path, name: str) -> None:
         ours.geom_rgba[collision], np.tile(np.float32(robot.collision_rgba), (collision.sum(), 1))
     )
     assert set(ours.geom_matid[collision]) == {-1}
+    assert robot.conventions_applied() == [
+        "collision geoms (group 0) lose their materials and are coloured 0 0.5 0 1 (collision_colour: robosuite)"
+    ]
+
+
+def test_without_robosuites_collision_colour_every_geom_keeps_its_files_look(tmp_path: Path) -> None:
+    ours, theirs, robot = _compile_both(tmp_path, "materials-and-textures")
+    assert (theirs.geom_group == COLLISION_GROUP).any() and (theirs.geom_matid >= 0).any()
+    assert np.array_equal(ours.geom_rgba, theirs.geom_rgba)
+    assert np.array_equal(ours.geom_matid, theirs.geom_matid)
+    assert robot.conventions_applied() == []
 
 
 @pytest.mark.skipif(mujoco_at_least(3, 17), reason="MuJoCo 3.17 and later attach a skin file's bones")

@@ -67,7 +67,7 @@ def test_reference_shows_types_defaults_and_required_fields() -> None:
     assert (
         "| `urdf` | string (not empty) or null | this or `mjcf` **required** unless `extends` |" in reference
     )
-    assert '| `important_sites` | mapping of string to string | `{"grip_site": "grip_site", ' in reference
+    assert "| `important_sites` | mapping of string to string | `{}` |" in reference
     assert '| `eef_bodies` | mapping of (`"right"` or `"left"`) to string | `{}` |' in reference
 
 

@@ -185,7 +185,7 @@ def test_position_servo_ranges_and_unlimited_joints(capsys: pytest.CaptureFixtur
         ("RA302", "warning", "robot0_elbow"),
     ]
     assert findings[0]["why"] == (
-        "ctrlrange targets [-3, 2] reach outside joint robot0_shoulder's range [-2, 2]: "
+        "ctrlrange targets [-3, 2] reach 1 outside joint robot0_shoulder's range [-2, 2]: "
         "the servo can push the joint into its limit"
     )
     assert (findings[0]["line"], findings[1]["line"]) == (18, 10)  # the <position> and the <joint>
@@ -420,3 +420,17 @@ def test_pre_commit_hooks_run_real_commands_on_spec_files(capsys: pytest.Capture
         files = [str(ROOT / "specs" / "finch6.yaml"), str(ROOT / "specs" / "grippers" / "tri_hand.yaml")]
         build_parser().parse_args([command, *flags, *files])
         assert main([command, *flags, *files]) == 0, capsys.readouterr()
+
+
+def test_a_range_a_few_microradians_too_wide_prints_the_digits_that_show_it(
+    capsys: pytest.CaptureFixture[str], write: Write
+) -> None:
+    rounded = PROBE_MJCF.replace(
+        'ctrlrange="-2 2" forcerange="-80 80"', 'ctrlrange="-2.0000027 2" forcerange="-80 80"'
+    )
+    code, findings = lint_json(capsys, str(probe(write, rounded)))
+    assert codes(findings) == [("RA301", "warning", "robot0_act_shoulder")]
+    assert findings[0]["why"] == (
+        "ctrlrange targets [-2.000003, 2] reach 2.7e-06 outside joint robot0_shoulder's range [-2, 2]: "
+        "the servo can push the joint into its limit"
+    )

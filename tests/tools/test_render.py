@@ -16,7 +16,7 @@ import pytest
 import assembler
 from assembler.cli import arguments, main
 from assembler.models import RobotModel
-from assembler.models.geom_groups import GROUP_COUNT, geoms_by_part
+from assembler.models.geom_groups import geoms_by_part
 from assembler.tools.render import LABELS, VIEWS, encode_png
 from assembler.tools.render.picture import render_views
 from assembler.tools.render.stage import FLOOR, HIDDEN_GROUP, Stage, build_stage
@@ -302,4 +302,4 @@ def test_groups_outside_mujocos_six_are_a_usage_error(value: str, capsys: pytest
 def test_the_cli_offers_the_renderers_views_labels_and_groups() -> None:
     assert tuple(VIEWS) == arguments.VIEWS
     assert set(arguments.LABELS) == set(LABELS)
-    assert list(arguments.GEOM_GROUPS) == list(range(GROUP_COUNT))
+    assert list(arguments.GEOM_GROUPS) == list(range(mujoco.mjNGROUP))

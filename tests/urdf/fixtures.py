@@ -29,15 +29,13 @@ def write_stl(path: Path, edge: float = 0.1) -> Path:
     return path
 
 
-def write_dae(path: Path, edge_mm: float = 100.0) -> Path:
-    """A COLLADA cube whose coordinates are millimetres (``<unit meter="0.001">``)."""
+def dae_text(edge_mm: float = 100.0, meter: str = "0.001") -> str:
+    """A COLLADA cube whose coordinates are millimetres (``<unit meter="0.001">``), or other units."""
     points = " ".join(f"{v:g}" for vertex in cube_vertices(edge_mm) for v in vertex)
     triangles = " ".join(str(i) for face in CUBE_FACES for i in face)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(
-        f"""<?xml version="1.0" encoding="utf-8"?>
+    return f"""<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <asset><unit name="millimeter" meter="0.001"/><up_axis>Z_UP</up_axis></asset>
+  <asset><unit name="millimeter" meter="{meter}"/><up_axis>Z_UP</up_axis></asset>
   <library_geometries>
     <geometry id="cube" name="cube">
       <mesh>
@@ -60,7 +58,12 @@ def write_dae(path: Path, edge_mm: float = 100.0) -> Path:
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 """
-    )
+
+
+def write_dae(path: Path, edge_mm: float = 100.0) -> Path:
+    """:func:`dae_text` written to ``path``."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(dae_text(edge_mm))
     return path
 
 
@@ -110,10 +113,15 @@ effort, velocity and dynamics; a COLLADA visual mesh in millimetres; a continuou
 prismatic fingers, the second a <mimic> of the first (multiplier -1, offset 0.01); a fixed tool link."""
 
 
-def write_package(root: Path, name: str = "my_arm", urdf: str = ARM_URDF) -> Path:
-    """A ROS package folder ``root/name`` (package.xml, urdf/, meshes/); returns the URDF's path."""
+def write_package(root: Path, name: str = "my_arm", urdf: str = ARM_URDF, declare: bool = True) -> Path:
+    """A ROS package folder ``root/name`` (package.xml, urdf/, meshes/); returns the URDF's path.
+
+    With ``declare``, the folder above ``root`` is made a spec repository that declares the package
+    (``packages = ["root/name"]``), as a lab keeps a vendor's package beside its specs."""
     package = root / name
     package.mkdir(parents=True, exist_ok=True)
+    if declare:
+        (root.parent / "robot-assembler.toml").write_text(f'packages = ["{root.name}/{name}"]\n')
     (package / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
     write_stl(package / "meshes" / "cube.stl")
     write_dae(package / "meshes" / "cube.dae")

@@ -79,7 +79,9 @@ def _mesh_files(robot: RobotModel) -> dict[str, Path]:
 
 
 @NEEDS_CONVERTER
-def test_package_uri_meshes_are_found_through_the_urdfs_own_package(tmp_path: Path, package: Path) -> None:
+def test_package_uri_meshes_are_found_through_the_package_its_repository_declares(
+    tmp_path: Path, package: Path
+) -> None:
     with pytest.raises(ValueError, match="Error opening file"):  # the trap: the path is stripped
         _direct_import(ARM_URDF).compile()
     robot = _robot(tmp_path, "ros/my_arm/urdf/my_arm.urdf")
@@ -97,7 +99,7 @@ def test_package_uri_meshes_are_found_through_ros_environment_variables(
 ) -> None:
     # The URDF lies outside its package, so only the environment can say where my_arm is.
     installed = tmp_path / "prefix" / "share"
-    write_package(installed)
+    write_package(installed, declare=False)
     (tmp_path / "arm.urdf").write_text(ARM_URDF)
     monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
     monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
@@ -108,8 +110,10 @@ def test_package_uri_meshes_are_found_through_ros_environment_variables(
         .splitlines()[0]
         .endswith(
             f"arm.urdf:{STL_LINE}: mesh package://my_arm/meshes/cube.stl: package 'my_arm' not found (searched the "
-            "URDF's own folders, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and the share/ folders of this Python "
-            "environment); set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH to where it is"
+            "packages its spec repository declares, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH and the share/ folders "
+            "of this Python environment); declare its folder in packages of the spec repository's "
+            "robot-assembler.toml (README: Spec repositories), or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH "
+            "to where it is"
         )
     )
     monkeypatch.setenv(variable, str(installed if variable == "ROS_PACKAGE_PATH" else installed.parent))
@@ -254,15 +258,14 @@ def test_two_mesh_files_with_one_name_stay_two_meshes(tmp_path: Path) -> None:
 
 @NEEDS_CONVERTER
 def test_an_unreadable_mesh_is_reported_once_with_what_to_do(tmp_path: Path, package: Path) -> None:
-    (package.parent.parent / "meshes" / "broken.ply").write_text("not a mesh")
-    package.write_text(ARM_URDF.replace("cube.dae", "broken.ply").replace("cube.stl", "broken.ply"))
+    (package.parent.parent / "meshes" / "broken.dae").write_text("<COLLADA><library_geometries>")
+    package.write_text(ARM_URDF.replace("cube.dae", "broken.dae").replace("cube.stl", "broken.dae"))
     with pytest.raises(MjcfError) as caught:
         _load(package)
     lines = str(caught.value).splitlines()
-    assert (
-        len(lines) == 1
-        and f"my_arm.urdf:{STL_LINE}: " in lines[0]
-        and "broken.ply: trimesh cannot read it" in lines[0]
+    assert len(lines) == 1 and lines[0] == (
+        f"{package}:{STL_LINE}: {package.parent.parent / 'meshes' / 'broken.dae'}: not well-formed XML: "
+        "no element found: line 1, column 29"
     )
 
 
@@ -321,7 +324,7 @@ def test_a_velocity_servo_takes_the_urdf_velocity_limit_as_its_range(tmp_path: P
 def test_the_spec_names_a_ros_package_with_package_uri(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    write_package(tmp_path / "prefix" / "share")
+    write_package(tmp_path / "prefix" / "share", declare=False)
     monkeypatch.setenv("AMENT_PREFIX_PATH", str(tmp_path / "prefix"))
     robot = _robot(tmp_path, "package://my_arm/urdf/my_arm.urdf")
     assert robot.source.path == (tmp_path / "prefix" / "share" / "my_arm" / "urdf" / "my_arm.urdf").resolve()

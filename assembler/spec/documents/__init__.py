@@ -5,7 +5,6 @@ problem a user causes is reported the same way: ``file:line:col: field.path: mes
 """
 
 from assembler.spec.documents.inheritance import (
-    SPEC_SUFFIXES,
     NoParents,
     Parents,
     Resolver,
@@ -30,7 +29,6 @@ from assembler.spec.documents.yaml_reader import parse_yaml, read_yaml_text
 __all__ = [
     "FIXED_FIELDS",
     "PATH_FIELDS",
-    "SPEC_SUFFIXES",
     "LoadedSpec",
     "LocatedDocument",
     "NoParents",

@@ -10,13 +10,11 @@ from assembler.spec.schema.common import NonNegativeFloat
 from assembler.spec.schema.gripper_actions import GripperActions
 from assembler.spec.schema.parts import PartSpec
 
+ROBOSUITE_SITES: dict[str, str] = {"grip_site": "grip_site", "grip_cylinder": "grip_site_cylinder"}
+"""robosuite's gripper site roles and the names its own grippers give them."""
 
-def _default_sites() -> dict[str, str]:
-    return {"grip_site": "grip_site", "grip_cylinder": "grip_site_cylinder"}
-
-
-def _default_sensors() -> dict[str, str]:
-    return {"force_ee": "force_ee", "torque_ee": "torque_ee"}
+ROBOSUITE_SENSORS: dict[str, str] = {"force_ee": "force_ee", "torque_ee": "torque_ee"}
+"""robosuite's gripper sensor roles and the names its own grippers give them."""
 
 
 class GripperSpec(PartSpec):
@@ -39,14 +37,28 @@ class GripperSpec(PartSpec):
     """How far one step of an incremental action moves each output, out of its range -1..1 (robosuite's
     speed)."""
 
-    important_sites: dict[str, str] = Field(default_factory=_default_sites)
-    """Role -> site name; every site must exist in the MJCF."""
+    root_body: str | None = None
+    """The body of the MJCF the gripper is made of, with everything below it and the actuators and
+    sensors of its joints: a jaw inside an arm's own file (SO-101, Fetch), which the robot's spec
+    cuts from the arm with remove_bodies; null: the file's one root body."""
+
+    root_pose: Literal["file", "reset"] = "file"
+    """file: the root body keeps the pose its file gives it, relative to the hand it is mounted on (as
+    robosuite's grippers do); reset: the root sits at the hand's origin, unrotated, for a hand whose
+    file places it somewhere in a scene (lint RA102). A robot's gripper_mount overrides either."""
+
+    important_sites: dict[str, str] = Field(default_factory=dict)
+    """Role -> site name; every site named must exist in the MJCF. robosuite's roles grip_site and
+    grip_cylinder need no entry: they are the sites grip_site and grip_site_cylinder where the MJCF
+    has them, and robosuite's bridge adds them where it has not (lint RA702)."""
 
     important_geoms: dict[str, list[str]] = Field(default_factory=dict)
     """Role (e.g. left_fingerpad) -> geom names; every geom must exist in the MJCF."""
 
-    important_sensors: dict[str, str] = Field(default_factory=_default_sensors)
-    """Role -> sensor name; every sensor must exist in the MJCF."""
+    important_sensors: dict[str, str] = Field(default_factory=dict)
+    """Role -> sensor name; every sensor named must exist in the MJCF. robosuite's roles force_ee and
+    torque_ee need no entry: they are the sensors of those names where the MJCF has them, and
+    robosuite's bridge adds them where it has not (lint RA702)."""
 
     @model_validator(mode="after")
     def _dof_matches_actions(self) -> GripperSpec:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -10,6 +10,7 @@ from assembler.spec.schema.actuators import ActuatorDeclaration
 from assembler.spec.schema.common import FiniteFloat, StrictModel, rule_error
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.spec.schema.joints import JointDefaults, JointOverride
+from assembler.spec.schema.lint import LintOptions
 
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
 
@@ -38,8 +39,9 @@ class PartSpec(StrictModel):
 
     urdf: str | None = Field(default=None, min_length=1)
     """The URDF file, imported by MuJoCo: relative to this spec file, absolute, or 'package://<package>/<path>'
-    (an installed Python package of that name, else a ROS package: ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or
-    the share/ folders of the Python environment, where example-robot-data installs)."""
+    (an installed Python package of that name, else a ROS package: one the spec repository declares in
+    packages, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or the share/ folders of the Python environment, where
+    example-robot-data installs)."""
 
     balance_inertia: bool = False
     """URDF only: make link inertias that violate A + B >= C (a common export error MuJoCo refuses)
@@ -63,6 +65,14 @@ class PartSpec(StrictModel):
     contact_excludes: list[tuple[str, str]] = Field(default_factory=list)
     """Pairs of bodies (as named in the file) that never collide, e.g. links whose collision meshes
     overlap where they meet (MuJoCo's <contact><exclude>)."""
+
+    collision_colour: Literal["file", "robosuite"] = "file"
+    """file: every geom keeps the colour and material its file gives; robosuite: collision geoms
+    (group 0) lose their material and take robosuite's collision colour (green for robots, blue for
+    grippers, yellow for mounts), as in robosuite's own models (`assembler inspect` says so)."""
+
+    lint: LintOptions = Field(default_factory=LintOptions)
+    """Lint findings about this part that its authors accept, each with the reason."""
 
     @model_validator(mode="after")
     def _one_source_file(self) -> PartSpec:

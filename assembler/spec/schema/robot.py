@@ -74,7 +74,9 @@ class JointGroups(StrictModel):
     """Joints that move the whole robot (mobile base joints inside the robot's own file)."""
 
     right: list[str] = Field(default_factory=list)
-    """Joints of the right arm; with no arm lists, every joint not in another group is an arm joint."""
+    """Joints of the right arm. With arm lists, a joint in no list belongs to no group (no controller
+    drives it, e.g. a jaw declared as the gripper); with none, every joint not in another group is an
+    arm joint."""
 
     left: list[str] = Field(default_factory=list)
     """Joints of the left arm (bimanual robots)."""
@@ -109,6 +111,10 @@ class RobotSpec(PartSpec):
 
     remove_actuation: list[str] = Field(default_factory=list)
     """Joints (names or globs) removed with everything that drives or measures them (legged robots)."""
+
+    remove_bodies: list[str] = Field(default_factory=list)
+    """Bodies removed with everything below them and what drives or measures it: a jaw inside the
+    arm's own file, made the robot's gripper by a gripper spec with root_body (docs/spec.md)."""
 
     remove_free_joint: bool = False
     """Remove the root's free joint, welding the robot to its base or the world."""

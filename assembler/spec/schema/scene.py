@@ -6,12 +6,10 @@ from typing import Literal
 
 from pydantic import Field
 
+from assembler.registry.arguments import DEFAULT
 from assembler.spec.schema.common import StrictModel, Vec3
 from assembler.spec.schema.parts import Name
 from assembler.spec.schema.robot import Arm
-
-DEFAULT = "default"
-"""Use the robot spec's default base or gripper."""
 
 
 class SceneRobot(StrictModel):

@@ -13,9 +13,9 @@ from pathlib import Path
 
 from assembler.errors import Problem, SpecError
 from assembler.files.paths import display_path, resolve_model_path
+from assembler.registry.arguments import SPEC_SUFFIXES
 from assembler.registry.catalog import PARENTS
 from assembler.spec.documents import (
-    SPEC_SUFFIXES,
     LoadedSpec,
     LocatedDocument,
     is_file_reference,

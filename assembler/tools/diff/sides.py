@@ -16,10 +16,10 @@ import mujoco
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
 from assembler.files.paths import display_path, is_file
 from assembler.models import PartModel, RobotModel
+from assembler.registry.arguments import ArgumentKind, argument_kind
 from assembler.registry.catalog import PARENTS, class_from_spec
 from assembler.registry.instances import equip
 from assembler.registry.lookup import find_registered, registered_names
-from assembler.spec.documents import SPEC_SUFFIXES
 from assembler.spec.schema import PartSpec
 from assembler.spec.spec_files import load_paths
 from assembler.tools.diff.revision import load_at_revision, split_revision
@@ -67,10 +67,11 @@ def load_side(reference: str) -> Side:
     if revision is not None:
         return Side(reference, class_from_spec(load_at_revision(*revision), register=False))
     path = Path(reference)
-    if is_file(path):
-        (loaded,) = load_paths([path], PARENTS)
-        return Side(reference, class_from_spec(loaded, register=False))
-    if reference.endswith(SPEC_SUFFIXES) or path.is_dir():
-        what = "a folder; give one spec file" if path.is_dir() else "no such file"
+    kind = argument_kind(reference)
+    if kind is ArgumentKind.NAME:
+        return Side(reference, _registered(reference))
+    if kind is ArgumentKind.SPEC_FOLDER or not is_file(path):
+        what = "a folder; give one spec file" if kind is ArgumentKind.SPEC_FOLDER else "no such file"
         raise SpecError(f"{display_path(path)}: {what}")
-    return Side(reference, _registered(reference))
+    (loaded,) = load_paths([path], PARENTS)
+    return Side(reference, class_from_spec(loaded, register=False))

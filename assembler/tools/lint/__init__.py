@@ -3,7 +3,9 @@
 =====  ========  ===================================================================
 code   severity  finding
 =====  ========  ===================================================================
+RA002  warning   a spec's lint.acknowledge entry that matches no finding (delete it)
 RA101  error     parts overlap at the home pose (e.g. a gripper inside its wrist)
+RA102  warning   gripper root body far (> 0.2 m) from the hand it is mounted on
 RA201  warning   mass implausible for the geoms' volume (density outside 100..20000)
 RA202  error     zero principal inertia, or an authored inertia that violates A+B>=C
 RA203  warning   inertia larger than any mass inside the body's geoms could give
@@ -23,15 +25,19 @@ RA704  warning   arm without the {arm}_center site robosuite's composite control
 =====  ========  ===================================================================
 
 Each check is a function ``(LintTarget) -> Iterator[Finding]``; :data:`CHECKS` runs them in order.
+A finding a part's spec acknowledges (``lint.acknowledge``, with a reason) is reported as
+acknowledged and fails nothing (:mod:`assembler.tools.lint.acknowledgements`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
+from assembler.tools.lint.acknowledgements import acknowledge
 from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
 from assembler.tools.lint.armature import tiny_index_armature
 from assembler.tools.lint.finding import SEVERITIES, Finding, Severity
+from assembler.tools.lint.gripper_pose import gripper_root_far_from_hand
 from assembler.tools.lint.important_names import (
     important_geoms_without_contact,
     missing_fingerpads,
@@ -49,6 +55,7 @@ Check = Callable[[LintTarget], Iterator[Finding]]
 
 CHECKS: tuple[Check, ...] = (
     self_penetration,
+    gripper_root_far_from_hand,
     implausible_density,
     degenerate_inertia,
     oversized_inertia,
@@ -69,9 +76,10 @@ CHECKS: tuple[Check, ...] = (
 
 
 def lint(target: LintTarget) -> list[Finding]:
-    """Every finding of every check on ``target``, errors first, then by code."""
-    findings = [finding for check in CHECKS for finding in check(target)]
-    return sorted(findings, key=lambda f: (SEVERITIES.index(f.severity), f.code))
+    """Every finding of every check on ``target``, acknowledged ones marked: those that fail first
+    (errors), then by severity and code."""
+    findings = acknowledge(target, [finding for check in CHECKS for finding in check(target)])
+    return sorted(findings, key=lambda f: (not f.fails, SEVERITIES.index(f.severity), f.code))
 
 
 __all__ = [

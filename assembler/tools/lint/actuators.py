@@ -67,20 +67,30 @@ def ctrlrange_beyond_joint_range(target: LintTarget) -> Iterator[Finding]:
         targets = sorted(float(c) / gear for c in model.actuator_ctrlrange[actuator])
         if targets[0] >= low - RANGE_TOLERANCE and targets[1] <= high + RANGE_TOLERANCE:
             continue
-        shown = f"[{targets[0]:.6g}, {targets[1]:.6g}]" + (
-            f" (ctrlrange / gear {gear:g})" if gear != 1.0 else ""
-        )
+        excess = max(low - targets[0], targets[1] - high)
+        shown, joint_range = _distinct(targets, [low, high])
+        shown += f" (ctrlrange / gear {gear:g})" if gear != 1.0 else ""
         yield Finding(
             code="RA301",
             severity="warning",
             subject=name,
             why=(
-                f"ctrlrange targets {shown} reach outside joint {joint_name}'s range "
-                f"[{low:.6g}, {high:.6g}]: the servo can push the joint into its limit"
+                f"ctrlrange targets {shown} reach {excess:.2g} outside joint {joint_name}'s range "
+                f"{joint_range}: the servo can push the joint into its limit"
             ),
             fix="narrow the actuator's ctrlrange to the joint's range (or fix the joint's range)",
             location=location,
         )
+
+
+def _distinct(first: list[float], second: list[float]) -> tuple[str, str]:
+    """Both ranges as text with the fewest digits (6 at least) that show they differ: a vendor's
+    rounding can put a bound a few microradians out, which 6 digits would print as equal."""
+    for digits in range(6, 18):
+        texts = [f"[{a:.{digits}g}, {b:.{digits}g}]" for a, b in (first, second)]
+        if texts[0] != texts[1]:
+            break
+    return texts[0], texts[1]
 
 
 def unlimited_driven_joints(target: LintTarget) -> Iterator[Finding]:

@@ -35,6 +35,17 @@ class Finding:
     location: Location | None = None
     """Where to change it: the spec field or the MJCF element, when known."""
 
+    acknowledged: str | None = None
+    """The reason a spec gives for accepting this finding (``lint.acknowledge``); None when none does.
+    An acknowledged finding is still reported, and never fails lint."""
+
+    @property
+    def fails(self) -> bool:
+        """Whether the finding makes ``assembler lint`` exit non-zero: an error nobody acknowledged."""
+        return self.severity == "error" and self.acknowledged is None
+
     def __str__(self) -> str:
         where = f"{self.location}: " if self.location else ""
-        return f"{where}{self.severity} {self.code} {self.subject}: {self.why}"
+        marker = "acknowledged " if self.acknowledged is not None else ""
+        text = f"{where}{marker}{self.severity} {self.code} {self.subject}: {self.why}"
+        return text + (f" (acknowledged: {self.acknowledged})" if self.acknowledged is not None else "")

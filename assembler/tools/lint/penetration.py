@@ -45,8 +45,11 @@ def self_penetration(target: LintTarget) -> Iterator[Finding]:
             continue
         if target.hangs_on_moving_body and _filtered_once_mounted(model, first, second):
             continue
-        names = [target.element_name(GEOM, g) for g in (first, second)]
         bodies = [target.element_name(BODY, int(model.geom_bodyid[g])) for g in (first, second)]
+        names = [  # an unnamed geom is told by its body, which also tells whose it is
+            target.element_name(GEOM, g) if mujoco.mj_id2name(model, GEOM, g) else f"geom #{g} ({body})"
+            for g, body in zip((first, second), bodies, strict=True)
+        ]
         # The later geom usually belongs to the part attached last (a gripper), the one to move.
         named = names[1] if mujoco.mj_id2name(model, GEOM, second) else bodies[1]
         location = target.element_location(("geom",) if named == names[1] else ("body",), named)

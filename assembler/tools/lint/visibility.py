@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from assembler.models.geom_groups import COLLISION_GROUP, VISUAL_GROUPS, geoms_by_part
+from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUPS
+from assembler.models.geom_groups import geoms_by_part
 from assembler.spec.fieldpath import FieldPath
 from assembler.tools.lint.finding import Finding
 from assembler.tools.lint.target import LintTarget

@@ -17,10 +17,11 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.cache.mesh_swap import compile_from_store
-from assembler.mjcf.keyframe import HOME_KEY, compile_with_home
+from assembler.build.compile import compile_home
+from assembler.mjcf.geom_group_numbers import VISUAL_GROUPS
+from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import RobotModel
-from assembler.models.geom_groups import VISUAL_GROUPS, PartGeoms, describe, geoms_by_part
+from assembler.models.geom_groups import PartGeoms, describe, geoms_by_part
 from assembler.tools.render.backend import RenderError
 
 FLOOR = "render_floor"
@@ -148,9 +149,7 @@ def build_stage(robot: RobotModel, width: int, height: int, groups: Sequence[int
     spec.visual.global_.offwidth = max(width, spec.visual.global_.offwidth)
     spec.visual.global_.offheight = max(height, spec.visual.global_.offheight)
     _add_scenery(spec)
-    model = compile_with_home(
-        spec, robot.assembly_home(), f"robot '{type(robot).__name__}'", compile_from_store
-    )
+    model = compile_home(spec, robot.assembly_home(), f"robot '{type(robot).__name__}'")
     floor = model.geom(FLOOR).id
     parts = geoms_by_part(model, (robot, *robot.models))
     shown = describe(parts, groups)

@@ -15,8 +15,8 @@ import numpy as np
 import yaml
 
 from assembler.errors import AssemblerError
+from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import check_override_paths, with_overrides
-from assembler.registry.instances import DEFAULT
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import Override, parse_overrides, parse_path
 

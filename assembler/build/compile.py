@@ -1,5 +1,9 @@
-"""Compile a spec and emit its MJCF from that same spec, with meshes read from the mesh store for
-both: one assembly, one compile of ours, and MuJoCo's XML writer.
+"""The one compile path: every model the assembler hands out (robots, parts alone, scenes, pictures,
+cache entries, variants) is compiled here, with its ``home`` keyframe and, unless asked otherwise,
+with meshes read from the mesh store. No other module names the mesh store when compiling.
+
+:func:`compile_and_emit` compiles a spec and emits its MJCF from that same spec, with meshes read
+from the mesh store for both: one assembly, one compile of ours, and MuJoCo's XML writer.
 
 MuJoCo's XML writer (``MjSpec.to_xml``) compiles the spec again inside (MuJoCo 3.x). Emitting
 after the stored meshes were taken out would make that second compile decode every OBJ and STL
@@ -19,13 +23,21 @@ from collections.abc import Callable, Mapping
 import mujoco
 
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE
-from assembler.cache.mesh_swap import MeshSwap, use_stored_meshes
+from assembler.cache.mesh_swap import MeshSwap, compile_from_store, use_stored_meshes
 from assembler.errors import MjcfError
 from assembler.mjcf.emit import to_xml
-from assembler.mjcf.keyframe import compile_with_home
+from assembler.mjcf.keyframe import compile_spec, compile_with_home
 
 _PLAIN_NAME = re.compile(r"^[A-Za-z0-9_.:\-]+$")
 """Mesh names written verbatim in the XML (no character MuJoCo's writer would escape)."""
+
+
+def compile_home(
+    spec: mujoco.MjSpec, home: Mapping[str, float], what: str, meshes: bool = True
+) -> mujoco.MjModel:
+    """Compile ``spec`` with its ``home`` keyframe (written into the spec too); meshes come from the
+    mesh store unless ``meshes`` is False. ``what`` names the assembly in errors."""
+    return compile_with_home(spec, home, what, compile_from_store if meshes else compile_spec)
 
 
 def compile_and_emit(

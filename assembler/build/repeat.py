@@ -17,7 +17,7 @@ import mujoco
 
 from assembler.cache.dependencies import Recorder
 from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
-from assembler.cache.service import default_store, load_entry
+from assembler.build.service import default_store, load_entry
 from assembler.cache.settings import cache_disabled
 
 Request = Mapping[str, Any]
@@ -33,20 +33,33 @@ class Origin:
     mtime_ns: int
 
 
-def _record_of(request: Request) -> RequestRecord | None:
-    if cache_disabled():
+@dataclass(frozen=True)
+class KeyedRequest:
+    """A request with its key in this environment, hashed once for both its lookup and its record."""
+
+    data: Request
+    key: str | None
+    """None when the request holds something that is not plain data: never answered nor recorded."""
+
+
+def keyed(request: Request) -> KeyedRequest:
+    """``request`` with its key."""
+    return KeyedRequest(request, request_key(request))
+
+
+def _record_of(request: KeyedRequest) -> RequestRecord | None:
+    if cache_disabled() or request.key is None:
         return None
-    key = request_key(request)
-    return None if key is None else default_request_store().load(key)
+    return default_request_store().load(request.key)
 
 
-def answered_model(request: Request) -> mujoco.MjModel | None:
+def answered_model(request: KeyedRequest) -> mujoco.MjModel | None:
     """The compiled model of a request answered before, if nothing it was made from changed."""
     record = _record_of(request)
     return None if record is None else load_entry(record.model_key)
 
 
-def answered_xml(request: Request) -> tuple[str, RequestRecord] | None:
+def answered_xml(request: KeyedRequest) -> tuple[str, RequestRecord] | None:
     """The emitted XML of a request answered before, and its record (the notes printed with it
     then), if nothing it was made from changed and the entry holds its XML."""
     record = _record_of(request)
@@ -57,7 +70,7 @@ def answered_xml(request: Request) -> tuple[str, RequestRecord] | None:
 
 
 def record(
-    request: Request,
+    request: KeyedRequest,
     model_key: str,
     origins: Iterable[Origin],
     roots: Iterable[Path],
@@ -67,7 +80,7 @@ def record(
     """Record that ``request`` is answered by the entry ``model_key``, made from the spec files
     ``origins`` (a file changed since it was read means no record), with the registry read from the
     folders below ``roots``; returns whether a record was written."""
-    key = request_key(request)
+    key = request.key
     if key is None or cache_disabled():
         return False
     read = {origin.path: (origin.size, origin.mtime_ns) for origin in origins}

@@ -19,19 +19,19 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.cache.dependencies import Recorder, asset_files, verify
-from assembler.cache.emission import compile_and_emit
+from assembler.build.compile import compile_and_emit, compile_home
 from assembler.cache.folder import FolderInfo
 from assembler.cache.folder import clear as clear_folder
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
-from assembler.cache.mesh_swap import compile_from_store, wait_for_fillers
+from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.cache.meshes import default_mesh_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
 from assembler.files.inputs import note_inputs
-from assembler.mjcf.keyframe import Keyframe, compile_spec, compile_with_home
+from assembler.mjcf.keyframe import Keyframe
 
 
 @dataclass(frozen=True)
@@ -134,20 +134,22 @@ def _built(build: Callable[[], Assembly]) -> Assembly:
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
     decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
-    compile = compile_from_store if meshes else compile_spec
-    model = compile_with_home(assembly.mjspec, assembly.home, assembly.what, compile)
+    model = compile_home(assembly.mjspec, assembly.home, assembly.what, meshes)
     return CompiledModel(model, Keyframe.of(model))
 
 
-def compile_model(
-    inputs: BuildInputs, build: Callable[[], Assembly], cache: bool = True, store: bool = True
-) -> CompiledModel:
-    """The model ``inputs`` describe: from the cache, or ``build()`` compiled and (with ``store``)
-    kept for next time.
+def entry_key(inputs: BuildInputs, cache: bool = True) -> str | None:
+    """The cache entry that holds the model ``inputs`` describe, or None when the cache is not used:
+    ``cache=False`` (``--no-cache``), ``ASSEMBLER_NO_CACHE``, or a hand-written part. Computed once
+    per request by the caller and passed on, so no key is hashed twice."""
+    return cache_key(inputs) if cache and not cache_disabled() else None
 
-    ``cache=False`` (``--no-cache``), ``ASSEMBLER_NO_CACHE`` or a hand-written part compile every time.
-    """
-    key = cache_key(inputs) if cache and not cache_disabled() else None
+
+def compile_model(
+    key: str | None, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+) -> CompiledModel:
+    """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
+    compiled and (with ``store``) kept for next time; with no key, compiled every time."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)
@@ -166,23 +168,23 @@ def compile_model(
 
 
 def compile_xml(
-    inputs: BuildInputs,
+    key: str | None,
     build: Callable[[], Assembly],
     cache: bool = True,
     store: bool = True,
     meshes: bool = True,
 ) -> tuple[CompiledModel | None, str]:
-    """The emitted MJCF of the assembly ``inputs`` describe, and the model when one was compiled.
+    """The emitted MJCF of the cache entry ``key`` (see :func:`entry_key`), and the model when one
+    was compiled.
 
     From the cache entry when it holds the XML (no build, no compile, the model not even read:
     None is returned for it); else built once, compiled once and emitted from that same spec
-    (:func:`~assembler.cache.emission.compile_and_emit`), and (with ``store``) kept: the XML is
+    (:func:`~assembler.build.compile.compile_and_emit`), and (with ``store``) kept: the XML is
     added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
     False reads meshes from their files rather than the mesh store: a process compiling the same
     meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from
     files processed (hulls, normals), and not those given in memory.
     """
-    key = cache_key(inputs) if cache and not cache_disabled() else None
     if key is None:
         counts.bypassed += 1
         assembly = _built(build)

@@ -1,0 +1,137 @@
+"""``assembler new``: a first spec for a vendor's MJCF or URDF, written so that it validates and builds
+as it stands, every guess commented and every open question named with the field to set.
+
+The file is read by the readers a spec uses (:mod:`~assembler.tools.new.reading`); the kinematic
+tree gives the arm, its joints and end-effector (:mod:`~assembler.tools.new.tree`); the compiled
+model gives a home pose and torque limits (:mod:`~assembler.tools.new.physics`);
+:mod:`~assembler.tools.new.decisions` turns them into fields, :mod:`~assembler.tools.new.entries`
+into YAML. Nothing in the vendor's files is changed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+from assembler.errors import AssemblerError
+from assembler.files.paths import PACKAGE_SCHEME, display_path
+from assembler.files.writing import write_atomically
+from assembler.registry.catalog import load_shipped_specs
+from assembler.registry.lookup import registered_names
+from assembler.tools.new.decisions import gripper_entries, robot_entries
+from assembler.tools.new.entries import Entry, spec_text
+from assembler.tools.new.naming import camel_case, free_name, name_source
+from assembler.tools.new.reading import ModelFile, read_model_file, spec_reference
+from assembler.tools.new.robosuite_names import robosuite_names
+from assembler.tools.new.tree import read_tree
+
+Kind = Literal["robot", "gripper"]
+
+HAND_WORDS = re.compile(r"hand|gripper", re.IGNORECASE)
+"""Words in a file's model name, file name or folder that make it a gripper rather than an arm."""
+
+ARM_WITH_HAND = re.compile(r"with_?(hand|gripper)", re.IGNORECASE)
+"""Words that say the file is an arm carrying its hand (``xarm6_with_gripper.urdf``)."""
+
+__all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec"]
+
+
+@dataclass(frozen=True)
+class NewSpec:
+    """A written spec: its text, registry name and kind."""
+
+    text: str
+    name: str
+    kind: Kind
+
+
+def _kind(file: ModelFile) -> tuple[Kind, str]:
+    words = " ".join([file.source.pristine.modelname, file.path.stem, file.path.parent.name])
+    found = None if ARM_WITH_HAND.search(words) else HAND_WORDS.search(words)
+    if found:
+        return "gripper", f"'{found.group(0)}' in the file's model name, file name or folder"
+    return "robot", "no 'hand' or 'gripper' in the file's model name, file name or folder"
+
+
+def _header(file: ModelFile) -> list[str]:
+    return [
+        "Written by `assembler new` from this file, which it did not change:",
+        f"  {display_path(file.path)}",
+        "'guess:' marks a value read off the file (check it); 'decide:' marks what the file cannot tell",
+        "(set the field it names). docs/add-your-robot.md explains each.",
+    ]
+
+
+def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
+    """``mjcf:`` or ``urdf:``, with what stops the file from being one robot, if anything."""
+    entry = Entry(file.format, spec_reference(file, spec_path.parent))
+    model = file.model
+    roots = [model.body(b).name for b in range(1, model.nbody) if model.body_parentid[b] == 0]
+    if len(roots) > 1:
+        entry.decide(
+            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}); a spec's "
+            "file holds one robot under one root body: point it at a file of the robot alone"
+        )
+    if not spec_reference(file, spec_path.parent).startswith(PACKAGE_SCHEME) and not _below(
+        file.path, spec_path.parent
+    ):
+        entry.decide(
+            "the file is outside the spec's folder, which a spec may not read by default: move the spec "
+            "beside it, declare a spec repository, or pass --allow-path (SECURITY.md)"
+        )
+    return entry
+
+
+def _below(path: Path, folder: Path) -> bool:
+    return path.resolve().is_relative_to(folder.resolve())
+
+
+def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> NewSpec:
+    """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
+    are relative to its folder); ``kind`` robot or gripper, guessed when None."""
+    file = read_model_file(model_path)
+    guessed_kind, why = _kind(file)
+    chosen: Kind = kind or guessed_kind
+    load_shipped_specs()
+    source = name_source(file.source.pristine.modelname, file.path)
+    taken = {*registered_names(), *robosuite_names()}
+    name = free_name(camel_case(source), taken, "Hand" if chosen == "gripper" else "Arm")
+    named = Entry("name", name).guess(f"from '{source}'; the registry and class name, yours to choose")
+    if name != camel_case(source):
+        named.guess(f"{camel_case(source)} is the name of a registered spec or of a robosuite class already")
+    entries: list[Entry] = []
+    if chosen == "gripper":
+        kind_entry = Entry("kind", "gripper")
+        if kind is None:
+            kind_entry.guess(f"{why}; an arm: delete this line (or run assembler new --kind robot)")
+        entries.append(kind_entry)
+    entries += [
+        named,
+        Entry("description", f"{source} from {Path(file.reference).name}, as `assembler new` read it."),
+        _file_entry(file, spec_path),
+    ]
+    tree = read_tree(file.model, hand=chosen == "gripper")
+    entries += gripper_entries(file, tree) if chosen == "gripper" else robot_entries(file, tree)
+    if chosen == "robot" and kind is None:
+        entries[0].guess(f"a robot arm: {why}; a hand: assembler new --kind gripper")
+    return NewSpec(spec_text(_header(file), entries), name, chosen)
+
+
+def snake_case(name: str) -> str:
+    """``So101NewCalib`` -> ``so101_new_calib`` (the shipped specs' file names)."""
+    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", name).lower()
+
+
+def write_new_spec(
+    model_path: Path, spec_path: Path | None = None, kind: Kind | None = None, force: bool = False
+) -> tuple[NewSpec, Path]:
+    """:func:`new_spec`, written to ``spec_path`` (default: ``<name in snake case>.yaml`` in the working
+    folder); an existing file is kept unless ``force``. Returns the spec and where it was written."""
+    written = new_spec(model_path, spec_path or Path.cwd() / "new.yaml", kind)
+    target = spec_path or Path(snake_case(written.name) + ".yaml")
+    if target.exists() and not force:
+        raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")
+    write_atomically(target, written.text)
+    return written, target

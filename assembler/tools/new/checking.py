@@ -1,0 +1,24 @@
+"""Whether the spec ``assembler new`` wrote validates and builds as written: it is registered and
+compiled (with its default base and grippers) as ``assembler validate --compile`` would, and what
+stops it is returned as the user's lines (one per problem), never raised."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from assembler.errors import AssemblerError
+from assembler.registry.catalog import register_specs
+from assembler.registry.instances import assemble, create_gripper
+
+
+def build_problems(spec_path: Path, kind: str) -> list[str]:
+    """The lines saying why the spec at ``spec_path`` does not build, or none when it builds."""
+    try:
+        (registered,) = register_specs(spec_path)
+        if kind == "gripper":
+            create_gripper(registered.__name__).compile_alone()
+        else:
+            assemble(registered.__name__).get_model()
+    except AssemblerError as error:
+        return [str(problem) for problem in error.problems]
+    return []

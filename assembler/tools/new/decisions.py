@@ -1,0 +1,229 @@
+"""What ``assembler new`` writes for a robot arm or a hand: each field guessed from the compiled model
+(:mod:`~assembler.tools.new.tree`, :mod:`~assembler.tools.new.physics`) with the reason beside it,
+and what the file cannot tell marked with the field to set."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import mujoco
+
+from assembler.robosuite.conventions import has_force_range, is_bridge_servo
+from assembler.tools.new.entries import Entry
+from assembler.tools.new.physics import home_pose, posed_data, scalar_joints, torque_limit
+from assembler.tools.new.reading import ModelFile
+from assembler.tools.new.tree import Tree
+
+DEFAULT_GRIPPER = "PincerGripper"
+"""The shipped two-finger gripper an arm without a jaw of its own gets, so robosuite's tasks can grasp."""
+
+STAND_IN_BASE = "Pedestal"
+"""The base robosuite stands an arm on (a floor-standing arm cannot reach robosuite's tables)."""
+
+NO_RULES = {"frictionloss": None, "damping": None, "armature": None}
+
+
+def _short(names: tuple[str, ...] | list[str], limit: int = 6) -> str:
+    shown = ", ".join(names[:limit])
+    return shown + (f" and {len(names) - limit} more" if len(names) > limit else "")
+
+
+def _actuated_joints(model: mujoco.MjModel) -> dict[str, int]:
+    """Joint name -> the actuator driving it, for actuators with a joint transmission."""
+    driven = {}
+    for actuator in range(model.nu):
+        if int(model.actuator_trntype[actuator]) == int(mujoco.mjtTrn.mjTRN_JOINT):
+            name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.actuator_trnid[actuator, 0]))
+            driven[name or ""] = actuator
+    return driven
+
+
+def driven_joints(model: mujoco.MjModel, joints: tuple[str, ...]) -> list[str]:
+    """The joints that need a motor of their own: all but those a joint equality makes follow another
+    (a URDF's ``<mimic>``; ``actuators:`` globs skip them too)."""
+    followers = {
+        mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.eq_obj1id[e]))
+        for e in range(model.neq)
+        if int(model.eq_type[e]) == int(mujoco.mjtEq.mjEQ_JOINT)
+    }
+    return [name for name in joints if name not in followers]
+
+
+def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
+    """Motors for a file without actuators: each joint's effort limit as the control range, a guessed
+    one (twice gravity's load) where the file gives none."""
+    driven = driven_joints(file.model, joints)
+    if file.model.nu or not driven:
+        return None
+    data = posed_data(file.model)
+    limits = {name: torque_limit(file.model, data, name) for name in driven}
+    declared: list[dict[str, Any]] = [{"match": "*", "type": "motor"}]
+    guessed = [name for name, limit in limits.items() if not limit.from_file]
+    declared += [
+        {"match": n, "type": "motor", "ctrlrange": [-limits[n].value, limits[n].value]} for n in guessed
+    ]
+    entry = Entry("actuators", declared).guess(
+        f"the {file.format.upper()} has no actuators: one motor per joint (robosuite's controllers write "
+        "torques), each limited to the joint's effort limit in the file"
+    )
+    if len(driven) < len(joints):
+        entry.guess(
+            f"{_short([n for n in joints if n not in driven])} follow another joint (URDF <mimic>): no motor"
+        )
+    if guessed:
+        entry.decide(
+            f"no effort limit in the file for {_short(guessed)}: their ctrlrange is a guess, twice the "
+            "torque gravity can load each joint with (arm stretched out); set each joint's torque limit "
+            "from the datasheet"
+        )
+    return entry
+
+
+def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
+    """The home pose: MuJoCo's qpos0, moved inside any joint range it lies outside."""
+    if not joints or not scalar_joints(file.model, joints):
+        return None
+    pose, moved = home_pose(file.model, joints)
+    entry = Entry("init_qpos", pose).guess("the file's zero pose (MuJoCo's qpos0), one value per joint")
+    if moved:
+        entry.guess(f"{_short(moved)} moved to the middle of their range: qpos0 lies outside it")
+    return entry.decide("set init_qpos to the pose the robot should start each episode in")
+
+
+def robosuite_entry(file: ModelFile, arm: tuple[str, ...]) -> Entry:
+    """How the arm enters robosuite: standing on a pedestal, its position servos made motors."""
+    model, options, entry = file.model, {"stand_in_base": STAND_IN_BASE}, Entry("robosuite", {})
+    servos = [a for name, a in _actuated_joints(model).items() if name in arm and is_bridge_servo(model, a)]
+    if servos:
+        options["actuation"] = "torque"
+        entry.guess(
+            "the arm's actuators are position servos: in robosuite each becomes a motor whose ctrlrange "
+            "is its forcerange (robosuite's controllers write torques); as_is keeps the servos"
+        )
+        bare = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in servos]
+        bare = [name for name, a in zip(bare, servos, strict=True) if not has_force_range(model, a)]
+        if bare:
+            entry.decide(f"give the servos {_short(bare)} a forcerange in the model (actuators: in the spec)")
+    if "right_center" not in {model.site(s).name for s in range(model.nsite)}:
+        entry.guess(
+            "the file has no site right_center, the arm's origin robosuite's controllers read: robosuite's "
+            "bridge adds one on the body the arm's first link hangs from (lint RA704)"
+        )
+    entry.guess(
+        f"robosuite stands the arm on the {STAND_IN_BASE} (without one it would stand on the floor, "
+        "below robosuite's tables); set default_base to build it on a base everywhere"
+    )
+    entry.value = options
+    return entry
+
+
+def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
+    """The fields of an arm's spec after its name and file."""
+    entries = []
+    if file.balance_inertia:
+        entries.append(
+            Entry("balance_inertia", True).guess(
+                "MuJoCo refuses this URDF's inertias (A + B >= C violated): balanced as its "
+                "balanceinertia would"
+            )
+        )
+    entries.append(
+        Entry("morphology", "manipulator").guess(
+            f"one arm of {len(tree.arm)} joints; a bimanual robot needs arm_type: bimanual and a left arm "
+            "in joint_groups, a humanoid morphology: humanoid"
+        )
+    )
+    if tree.eef_by_name:
+        how = "the body named like a hand below the last arm joint"
+    else:
+        how = "the body where the fingers branch off" if tree.fingers else "the last link of the arm's chain"
+    eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"{how}; grippers are mounted here")
+    if tree.grip_site:
+        eef.guess(f"the file's grip frame is the site {tree.grip_site}")
+    entries.append(eef)
+    groups: dict[str, list[str]] = {"right": list(tree.arm)}
+    for part in ("base", "torso", "head"):
+        if getattr(tree, part):
+            groups[part] = list(getattr(tree, part))
+    joints = Entry("joint_groups", groups).guess(
+        "the arm is the chain of joints from the root to the deepest link"
+        + "".join(
+            f"; {part}: {_short(list(getattr(tree, part)))}"
+            for part in ("base", "torso", "head")
+            if getattr(tree, part)
+        )
+    )
+    if tree.fingers:
+        joints.decide(
+            f"{_short(tree.fingers)} move a jaw or fingers that are part of this file: they are listed in no "
+            "group, so that robosuite's arm controller does not drive them; list them under right: if it "
+            "should"
+        )
+    entries.append(joints)
+    if tree.fingers:
+        entries.append(
+            Entry("default_grippers", {"right": None}).guess(
+                "the file has its own jaw, so no gripper is added; a gripper spec of the jaw needs its "
+                "own file"
+            )
+        )
+    else:
+        entries.append(
+            Entry("default_grippers", {"right": DEFAULT_GRIPPER}).guess(
+                f"no jaw in the file: the shipped {DEFAULT_GRIPPER}, so robosuite's tasks can grasp; any "
+                "registered gripper (assembler list grippers) or null"
+            )
+        )
+    pose = init_qpos_entry(file, tree.joints)
+    entries += [pose] if pose else []
+    entries.append(
+        Entry("joint_defaults", dict(NO_RULES)).guess(
+            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
+            "rules (0.1, 0.1 and 5/(i+1) where the file sets none)"
+        )
+    )
+    actuators = actuator_entry(file, tree.joints)
+    entries += [actuators] if actuators else []
+    entries.append(robosuite_entry(file, tree.arm))
+    return entries
+
+
+def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
+    """The fields of a hand's spec after its kind, name and file."""
+    entries = [
+        Entry("eef_body", tree.eef_body).guess(
+            "the root body; set the body at the grip point if there is one (robosuite adds an eef body here)"
+        )
+    ]
+    sites = Entry("important_sites", {"grip_site": tree.grip_site} if tree.grip_site else {})
+    if tree.grip_site:
+        sites.guess(f"the site {tree.grip_site} is named like a grip point")
+    else:
+        sites.decide("no grip site in the file (robosuite adds grip_site at eef_body); name one if it has it")
+    entries.append(sites)
+    entries.append(
+        Entry("important_sensors", {}).guess(
+            "no force/torque sensors named force_ee, torque_ee in the file (robosuite adds them)"
+        )
+    )
+    pose = init_qpos_entry(file, tree.joints)
+    entries += [pose] if pose else []
+    actuators = actuator_entry(file, tree.joints)
+    entries += [actuators] if actuators else []
+    names = (
+        driven_joints(file.model, tree.joints)
+        if actuators
+        else [
+            mujoco.mj_id2name(file.model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in range(file.model.nu)
+        ]
+    )
+    if names:
+        entries.append(
+            Entry(
+                "actions", {"mode": "absolute", "dimensions": [{"actuators": [name]} for name in names]}
+            ).decide(
+                "one action per actuator, its value the actuator's position in its range (robosuite's "
+                "dexterous hands); a jaw that opens and closes as one: one dimension with every actuator"
+            )
+        )
+    return entries

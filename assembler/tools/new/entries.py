@@ -1,0 +1,70 @@
+"""The spec ``assembler new`` writes, as ordered top-level fields each with the comments that say
+what was guessed and what is left to decide; :func:`spec_text` turns them into YAML."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+GUESS = "guess"
+"""A value read off the file's tree, names or compile: check it."""
+
+DECIDE = "decide"
+"""Something the file cannot tell: the comment names the field to set."""
+
+
+@dataclass
+class Entry:
+    """One top-level field of the spec and its comment lines (``guess: ...``, ``decide: ...``)."""
+
+    key: str
+    value: Any
+    notes: list[str] = field(default_factory=list)
+
+    def guess(self, text: str) -> Entry:
+        self.notes.append(f"{GUESS}: {text}")
+        return self
+
+    def decide(self, text: str) -> Entry:
+        self.notes.append(f"{DECIDE}: {text}")
+        return self
+
+
+def _flow(value: Any) -> str:
+    text: str = yaml.safe_dump(value, default_flow_style=True, width=10**6, sort_keys=False)
+    return text.strip().removesuffix("...").strip()
+
+
+def _wrap(text: str, width: int = 106) -> list[str]:
+    """A comment's text as ``# `` lines of at most ``width`` characters."""
+    lines, line = [], ""
+    for word in text.split():
+        if line and len(line) + 1 + len(word) > width - 2:
+            lines.append(line)
+            line = "  " + word if lines or line.startswith("  ") else word
+            continue
+        line = f"{line} {word}" if line else word
+    lines.append(line)
+    return [f"# {item}" for item in lines]
+
+
+def _value_lines(key: str, value: Any) -> list[str]:
+    if isinstance(value, list) and value and all(isinstance(item, dict) for item in value):
+        return [f"{key}:", *(f"  - {_flow(item)}" for item in value)]
+    if isinstance(value, dict) and value and any(isinstance(item, (list, dict)) for item in value.values()):
+        return [f"{key}:", *(f"  {_flow({name: item})[1:-1]}" for name, item in value.items())]
+    return [f"{key}: {_flow(value)}"]
+
+
+def spec_text(header: list[str], entries: list[Entry]) -> str:
+    """The spec's YAML: the header comment, then each field after its comments."""
+    lines = [f"# {line}" if line else "#" for line in header]
+    for entry in entries:
+        if entry.notes:
+            lines.append("")
+            for note in entry.notes:
+                lines += _wrap(note)
+        lines += _value_lines(entry.key, entry.value)
+    return "\n".join(lines) + "\n"

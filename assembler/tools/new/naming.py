@@ -1,0 +1,44 @@
+"""The registry name ``assembler new`` gives a robot: from the file's own model name, else from its
+file name, as a Python class name, and never one a registered spec already has."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection
+from pathlib import Path
+
+GENERIC_STEMS = frozenset({"robot", "model", "main", "scene", "index", "urdf", "mjcf"})
+"""File names that say nothing about the robot (robosuite's ``robot.xml``): the folder is used instead."""
+
+MUJOCO_UNNAMED = "MuJoCo Model"
+"""The model name MuJoCo gives a file whose ``<mujoco>`` has no ``model`` attribute."""
+
+
+def camel_case(text: str) -> str:
+    """``so101_new_calib`` -> ``So101NewCalib``: words joined, each capitalized, digits kept."""
+    words = [word for word in re.split(r"[^A-Za-z0-9]+", text) if word]
+    name = "".join(word[:1].upper() + word[1:] for word in words)
+    if not name or not name[0].isalpha():
+        name = "Robot" + name
+    return name[:64]
+
+
+def name_source(model_name: str, path: Path) -> str:
+    """What the name is made from: the file's model name, else its stem, else its folder's name."""
+    if model_name and model_name != MUJOCO_UNNAMED:
+        return model_name
+    if path.stem.lower() not in GENERIC_STEMS:
+        return path.stem
+    return path.parent.name or path.stem
+
+
+def free_name(wanted: str, taken: Collection[str], suffix: str) -> str:
+    """``wanted``, else ``wanted`` + ``suffix`` (``Z1Arm``), else with a number (``Z1Arm2``), whichever
+    no registered spec and no robosuite class has (case ignored, as on case-blind file systems)."""
+    lowered = {item.lower() for item in taken}
+    candidates = [wanted, wanted + suffix] if not wanted.endswith(suffix) else [wanted]
+    number = 2
+    while all(name.lower() in lowered for name in candidates):
+        candidates.append(f"{wanted}{suffix if not wanted.endswith(suffix) else ''}{number}")
+        number += 1
+    return next(name for name in candidates if name.lower() not in lowered)

@@ -1,0 +1,100 @@
+"""Reading the vendor's file for ``assembler new``: the same readers a spec uses (:func:`load_mjcf`,
+:func:`load_urdf`), the file named the way the spec will name it, and MuJoCo's compile of it, which
+says whether a URDF's inertias need ``balance_inertia``.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+import mujoco
+
+from assembler.errors import MjcfError
+from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, package_root
+from assembler.mjcf.source import MjcfSource, load_mjcf
+from assembler.urdf import load_urdf
+
+Format = Literal["mjcf", "urdf"]
+
+UNBALANCED_INERTIA = "A + B >= C"
+"""The words of MuJoCo's refusal of an inertia that violates the triangle inequality."""
+
+
+@dataclass(frozen=True)
+class ModelFile:
+    """The vendor's file as the spec names it, read and compiled."""
+
+    path: Path
+    format: Format
+    reference: str
+    """``package://NAME/...`` when the file lies in an installed Python package, else its absolute path
+    (:func:`spec_reference` makes it relative to the spec)."""
+    source: MjcfSource
+    model: mujoco.MjModel
+    balance_inertia: bool
+    """True when MuJoCo refused the URDF's inertias until they were balanced."""
+
+
+def file_format(path: Path) -> Format:
+    """'urdf' for a ``.urdf`` file, else 'mjcf'."""
+    return "urdf" if path.suffix.lower() == ".urdf" else "mjcf"
+
+
+def python_package_reference(path: Path) -> str | None:
+    """``package://NAME/inner/path`` when ``path`` lies in an installed top-level package NAME (found
+    on ``sys.path``, as a spec's ``package://`` reference is), else None."""
+    roots = {Path(entry).resolve() for entry in sys.path if entry and os.path.isdir(entry)}
+    for folder in path.parents:
+        if folder.parent in roots and folder.name.isidentifier():
+            found = package_root(folder.name)
+            if found is not None and found.resolve() == folder:
+                return f"{PACKAGE_SCHEME}{folder.name}/{path.relative_to(folder).as_posix()}"
+    return None
+
+
+def spec_reference(model: ModelFile, spec_dir: Path) -> str:
+    """The spec's ``mjcf:``/``urdf:`` value: the package reference, or the path relative to the spec's
+    folder."""
+    if model.reference.startswith(PACKAGE_SCHEME):
+        return model.reference
+    return Path(os.path.relpath(model.path, spec_dir.resolve())).as_posix()
+
+
+def _compile(source: MjcfSource, shown: str) -> mujoco.MjModel:
+    try:
+        return source.new_spec().compile()
+    except ValueError as error:
+        raise MjcfError(f"{shown}: MuJoCo refuses it: {' '.join(str(error).split())}") from None
+
+
+def _read(path: Path, reference: str, fmt: Format) -> tuple[MjcfSource, mujoco.MjModel, bool]:
+    shown = display_path(path)
+    if fmt == "mjcf":
+        source = load_mjcf(reference)
+        return source, _compile(source, shown), False
+    source = load_urdf(reference)
+    try:
+        return source, source.new_spec().compile(), False
+    except ValueError as error:
+        if UNBALANCED_INERTIA not in str(error):
+            raise MjcfError(f"{shown}: MuJoCo refuses it: {' '.join(str(error).split())}") from None
+    balanced = load_urdf(reference, balance_inertia=True)
+    return balanced, _compile(balanced, shown), True
+
+
+def read_model_file(path: Path) -> ModelFile:
+    """The MJCF or URDF at ``path``, read as a spec naming it would read it (its own folder allowed
+    when it is no package's), and compiled."""
+    path = path.resolve()
+    if not path.is_file():
+        raise MjcfError(f"{display_path(path)}: no such file; give an MJCF (.xml) or URDF (.urdf) file")
+    fmt = file_format(path)
+    package = python_package_reference(path)
+    reference = package or str(path)
+    with allowing([] if package else [path.parent]):
+        source, model, balanced = _read(path, reference, fmt)
+    return ModelFile(path, fmt, reference, source, model, balanced)

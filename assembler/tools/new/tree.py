@@ -1,0 +1,147 @@
+"""What the kinematic tree of a compiled model says about a robot: which joints are fingers, which
+move the whole robot, the arm's chain, the end-effector body and a grip frame. Every answer is a
+guess from names and structure; :mod:`assembler.tools.new.decisions` says why beside it.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import mujoco
+
+FINGER_WORDS = re.compile(r"finger|gripper|jaw|claw|knuckle|thumb|grip", re.IGNORECASE)
+"""Joint names of a jaw or fingers (robosuite's grippers and most vendors' files name them so)."""
+
+EEF_WORDS = re.compile(
+    r"(^|[_/:.])(right_hand|left_hand|hand|eef|ee_link|ee|tool0|tool|flange|tcp|attachment)$",
+    re.IGNORECASE,
+)
+"""Body names vendors give the end of an arm, where a gripper is mounted."""
+
+GRIP_WORDS = re.compile(r"grip|pinch|tcp|eef|ee_site", re.IGNORECASE)
+"""Site names vendors give a grip point."""
+
+PART_WORDS: dict[str, re.Pattern[str]] = {
+    "torso": re.compile(r"torso", re.IGNORECASE),
+    "head": re.compile(r"head|neck", re.IGNORECASE),
+}
+"""Body-part groups recognized by joint name (robosuite's own name rules; a neck is a head's)."""
+
+FREE = int(mujoco.mjtJoint.mjJNT_FREE)
+"""As an integer: on MuJoCo 4 enums compare unreliably with the items of model arrays."""
+
+
+@dataclass(frozen=True)
+class Tree:
+    """The kinematic tree's guesses, by MJCF name (joints in MuJoCo's order)."""
+
+    joints: tuple[str, ...]
+    arm: tuple[str, ...]
+    fingers: tuple[str, ...]
+    base: tuple[str, ...]
+    torso: tuple[str, ...]
+    head: tuple[str, ...]
+    eef_body: str
+    eef_by_name: bool
+    """True when the end-effector body was found by its name, False when it is the last arm link."""
+    grip_site: str | None
+
+
+def _name(model: mujoco.MjModel, kind: mujoco.mjtObj, index: int) -> str:
+    return mujoco.mj_id2name(model, kind, index) or ""
+
+
+def _ancestors(model: mujoco.MjModel, body: int) -> list[int]:
+    """``body`` and its ancestors up to (not including) the world, deepest first."""
+    chain = []
+    while body > 0:
+        chain.append(body)
+        body = int(model.body_parentid[body])
+    return chain
+
+
+def _joint_count(model: mujoco.MjModel, body: int) -> int:
+    return sum(int(model.body_jntnum[b]) for b in _ancestors(model, body))
+
+
+def _common_ancestor(model: mujoco.MjModel, bodies: list[int]) -> int:
+    shared = set(_ancestors(model, bodies[0]))
+    for body in bodies[1:]:
+        shared &= set(_ancestors(model, body))
+    return max(shared, key=lambda b: len(_ancestors(model, b))) if shared else 1
+
+
+def _subtree(model: mujoco.MjModel, top: int) -> list[int]:
+    return [b for b in range(1, model.nbody) if top in _ancestors(model, b)]
+
+
+def _finger_joints(model: mujoco.MjModel, joints: list[int]) -> list[int]:
+    """Joints named like fingers, and every joint below the first body such a joint hangs from."""
+    named = [j for j in joints if FINGER_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_JOINT, j))]
+    if not named:
+        return []
+    hand = _common_ancestor(model, [int(model.body_parentid[model.jnt_bodyid[j]]) for j in named])
+    below = set(_subtree(model, hand)) - {hand}
+    return [j for j in joints if j in named or int(model.jnt_bodyid[j]) in below]
+
+
+def _eef_body(model: mujoco.MjModel, arm: list[int], fingers: list[int]) -> tuple[int, bool]:
+    """The body a gripper goes on: where the fingers branch off, else a body named like a hand below
+    the last arm joint, else the last arm joint's body."""
+    if fingers:
+        return _common_ancestor(
+            model, [int(model.body_parentid[model.jnt_bodyid[j]]) for j in fingers]
+        ), False
+    if not arm:
+        return 1, False
+    last = int(model.jnt_bodyid[arm[-1]])
+    for body in _subtree(model, last):
+        if EEF_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_BODY, body)):
+            return body, True
+    return last, False
+
+
+def _grip_site(model: mujoco.MjModel, top: int) -> str | None:
+    below = set(_subtree(model, top))
+    for site in range(model.nsite):
+        name = _name(model, mujoco.mjtObj.mjOBJ_SITE, site)
+        if int(model.site_bodyid[site]) in below and GRIP_WORDS.search(name):
+            return name
+    return None
+
+
+def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
+    """The guesses for ``model``: a robot's arm and parts, or (``hand``) a gripper's grip frame."""
+    joints = [j for j in range(model.njnt) if int(model.jnt_type[j]) != FREE]
+    names = {j: _name(model, mujoco.mjtObj.mjOBJ_JOINT, j) for j in joints}
+    roots = [b for b in range(1, model.nbody) if model.body_parentid[b] == 0]
+    if hand:  # the world child holding the most joints (a scene file also has a floor, a table...)
+        root = max(roots, key=lambda top: sum(int(model.body_jntnum[b]) for b in _subtree(model, top)))
+        site = _grip_site(model, root)
+        every = tuple(names.values())
+        return Tree(every, (), every, (), (), (), _name(model, mujoco.mjtObj.mjOBJ_BODY, root), False, site)
+    base = [j for j in joints if int(model.jnt_bodyid[j]) in roots]
+    fingers = _finger_joints(model, [j for j in joints if j not in base])
+    parts = {
+        part: [j for j in joints if j not in base and j not in fingers and words.search(names[j])]
+        for part, words in PART_WORDS.items()
+    }
+    taken = {*base, *fingers, *parts["torso"], *parts["head"]}
+    deepest = max(range(1, model.nbody), key=lambda b: (_joint_count(model, b), -b))
+    on_chain = set(_ancestors(model, deepest))
+    arm = [j for j in joints if j not in taken and int(model.jnt_bodyid[j]) in on_chain]
+    others = [j for j in joints if j not in taken and j not in arm]
+    arm += others  # joints on side branches (none in a serial arm) stay with the arm, and are said
+    eef, by_name = _eef_body(model, [j for j in arm if j not in others] or arm, fingers)
+    return Tree(
+        joints=tuple(names.values()),
+        arm=tuple(names[j] for j in arm),
+        fingers=tuple(names[j] for j in fingers),
+        base=tuple(names[j] for j in base),
+        torso=tuple(names[j] for j in parts["torso"]),
+        head=tuple(names[j] for j in parts["head"]),
+        eef_body=_name(model, mujoco.mjtObj.mjOBJ_BODY, eef),
+        eef_by_name=by_name,
+        grip_site=_grip_site(model, eef),
+    )

@@ -1,0 +1,202 @@
+"""``assembler new``: a spec for a model file that validates and builds as written, every guess
+commented, nothing in the model file changed. Real files and real compiles; the published robots
+are in tests/corpus."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+import yaml
+
+import assembler
+from assembler.cli import main
+from assembler.registry.catalog import register_specs
+from tests.conftest import TWO_LINK_MJCF
+
+NO_ACTUATORS = TWO_LINK_MJCF.split("  <actuator>")[0] + "</mujoco>\n"
+"""The two-link arm without its actuators (as dm_control's Jaco arm comes)."""
+
+OUT_OF_RANGE = TWO_LINK_MJCF.replace('range="-2 2"', 'range="0.5 2"')
+"""The elbow's range excludes 0, MuJoCo's qpos0."""
+
+
+def _new(model: Path, spec: Path, *flags: str) -> int:
+    return main(["new", str(model), "-o", str(spec), *flags])
+
+
+def test_new_writes_a_spec_that_validates_and_builds_as_written(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/twolink.xml", TWO_LINK_MJCF)
+    before = model.read_bytes()
+    spec = model.with_name("twolink.yaml")
+    assert _new(model, spec) == 0
+    assert capsys.readouterr().out == (
+        f"wrote {spec}: robot Twolink (validated and compiled); check each 'guess:' and settle each "
+        "'decide:' comment\n"
+    )
+    fields = yaml.safe_load(spec.read_text())
+    assert fields["mjcf"] == "twolink.xml"
+    assert fields["eef_bodies"] == {"right": "right_hand"}
+    assert fields["joint_groups"] == {"right": ["shoulder", "elbow"]}
+    (cls,) = register_specs(spec)
+    robot = assembler.assemble(cls.__name__)
+    assert robot.get_model().njnt == 2 + 2  # the arm's two joints and the default gripper's two
+    assert model.read_bytes() == before
+
+
+def test_every_field_new_writes_has_a_comment_saying_why(write: Callable[[str, str], Path]) -> None:
+    model = write("robots/twolink.xml", TWO_LINK_MJCF)
+    spec = model.with_name("twolink.yaml")
+    assert _new(model, spec) == 0
+    lines = spec.read_text().splitlines()
+    fields = [
+        i for i, line in enumerate(lines) if line and not line[0].isspace() and not line.startswith("#")
+    ]
+    uncommented = [lines[i] for i in fields if not lines[i - 1].startswith("#")]
+    assert uncommented == [
+        "description: twolink from twolink.xml, as `assembler new` read it.",
+        "mjcf: twolink.xml",
+    ]
+
+
+def test_new_refuses_to_replace_an_existing_spec_unless_forced(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/twolink.xml", TWO_LINK_MJCF)
+    spec = write("robots/twolink.yaml", "name: Mine\nmjcf: twolink.xml\n")
+    assert _new(model, spec) == 1
+    assert capsys.readouterr().err.strip().splitlines() == [
+        f"{spec}: exists; keep it, or give --force to replace it"
+    ]
+    assert spec.read_text() == "name: Mine\nmjcf: twolink.xml\n"
+    assert _new(model, spec, "--force") == 0
+    assert "name: Twolink" in spec.read_text()
+
+
+def test_a_file_without_actuators_gets_motors_with_guessed_torque_limits_marked_to_decide(
+    write: Callable[[str, str], Path],
+) -> None:
+    model = write("robots/bare.xml", NO_ACTUATORS)
+    spec = model.with_name("bare.yaml")
+    assert _new(model, spec) == 0
+    text = spec.read_text()
+    assert "# decide: no effort limit in the file for shoulder, elbow" in text
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_robot(cls.__name__).get_model()
+    assert compiled.nu == 2
+    shoulder = compiled.actuator("robot0_shoulder")
+    # the bound: twice the torque gravity exerts with everything beyond the joint stretched out, rounded up
+    vendor = mujoco.MjModel.from_xml_path(str(model))
+    data = mujoco.MjData(vendor)
+    mujoco.mj_kinematics(vendor, data)
+    bodies = [vendor.body(name).id for name in ("link1", "link2", "right_hand")]
+    load = sum(vendor.body_mass[b] * np.linalg.norm(data.xipos[b] - data.xanchor[0]) for b in bodies)
+    low, high = shoulder.ctrlrange
+    assert low == -high and 2 * 9.81 * load <= high <= 1.1 * 2 * 9.81 * load
+    assert compiled.actuator_gaintype[shoulder.id] == mujoco.mjtGain.mjGAIN_FIXED
+
+
+def test_a_zero_pose_outside_a_joint_range_is_moved_to_the_middle_of_the_range(
+    write: Callable[[str, str], Path],
+) -> None:
+    model = write("robots/twolink.xml", OUT_OF_RANGE)
+    spec = model.with_name("twolink.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["init_qpos"] == [0.0, 1.25]
+    assert "# guess: elbow moved to the middle of their range: qpos0 lies outside it" in spec.read_text()
+
+
+def test_a_file_named_like_a_hand_becomes_a_gripper_spec(write: Callable[[str, str], Path]) -> None:
+    model = write("hands/my_hand.xml", TWO_LINK_MJCF)
+    spec = model.with_name("my_hand.yaml")
+    assert _new(model, spec) == 0
+    fields = yaml.safe_load(spec.read_text())
+    assert (fields["kind"], fields["name"], fields["eef_body"]) == ("gripper", "Twolink", "base")
+    assert fields["actions"]["dimensions"] == [{"actuators": ["act_shoulder"]}, {"actuators": ["act_elbow"]}]
+    (cls,) = register_specs(spec)
+    assert assembler.create_gripper(cls.__name__).compile_alone().nu == 2
+
+
+def test_a_model_file_mujoco_refuses_is_one_line_naming_it(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/broken.xml", TWO_LINK_MJCF.replace('joint="elbow"', 'joint="nope"'))
+    assert _new(model, model.with_name("broken.yaml")) == 1
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert line.startswith(f"{model}:") and "nope" in line
+    assert not model.with_name("broken.yaml").exists()
+
+
+SCENE = TWO_LINK_MJCF.replace(
+    "  <worldbody>\n",
+    '  <worldbody>\n    <body name="table" pos="1 0 0"><geom type="box" size="0.3 0.3 0.4"/></body>\n',
+)
+"""The two-link arm in a scene with a table beside it (as gymnasium-robotics' task files come)."""
+
+
+def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/scene.xml", SCENE)
+    spec = model.with_name("scene.yaml")
+    assert _new(model, spec) == 1
+    out, err = capsys.readouterr()
+    assert out == f"wrote {spec}: robot Twolink; it does not build as written:\n"
+    line = spec.read_text().splitlines().index(f"mjcf: {model.name}") + 1
+    assert err.splitlines() == [
+        f"{spec}:{line}:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
+        "wrap the parts in one root body"
+    ]
+    assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()
+
+
+def test_a_name_a_registered_spec_has_is_not_taken_again(write: Callable[[str, str], Path]) -> None:
+    model = write("robots/panda.xml", TWO_LINK_MJCF.replace('model="twolink"', 'model="panda"'))
+    spec = model.with_name("panda.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["name"] == "PandaArm"  # robosuite's Panda has a shipped spec
+    assert (
+        "# guess: Panda is the name of a registered spec or of a robosuite class already" in spec.read_text()
+    )
+
+
+MIMIC_URDF = """\
+<robot name="pincer_arm">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <link name="link1"><inertial><origin xyz="0 0 0.2"/><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin xyz="0 0 0.2"/><geometry><cylinder radius="0.03" length="0.4"/></geometry></collision></link>
+  <link name="left_finger"><inertial><mass value="0.1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="right_finger"><inertial><mass value="0.1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="joint1" type="revolute"><parent link="base"/><child link="link1"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="40" velocity="2"/></joint>
+  <joint name="left_finger_joint" type="prismatic"><parent link="link1"/><child link="left_finger"/>
+    <origin xyz="0 0.02 0.4"/><axis xyz="0 1 0"/><limit lower="0" upper="0.04" effort="20" velocity="0.1"/></joint>
+  <joint name="right_finger_joint" type="prismatic"><parent link="link1"/><child link="right_finger"/>
+    <origin xyz="0 -0.02 0.4"/><axis xyz="0 -1 0"/><limit lower="0" upper="0.04" effort="20" velocity="0.1"/>
+    <mimic joint="left_finger_joint" multiplier="1" offset="0"/></joint>
+</robot>
+"""
+"""A one-joint arm with a jaw of two fingers, the second following the first (URDF <mimic>)."""
+
+
+def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
+    write: Callable[[str, str], Path],
+) -> None:
+    model = write("robots/pincer_arm.urdf", MIMIC_URDF)
+    spec = model.with_name("pincer_arm.yaml")
+    assert _new(model, spec) == 0
+    fields = yaml.safe_load(spec.read_text())
+    assert fields["joint_groups"] == {"right": ["joint1"]}
+    assert fields["default_grippers"] == {"right": None}
+    assert "# guess: right_finger_joint follow another joint (URDF <mimic>): no motor" in spec.read_text()
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_robot(cls.__name__).get_model()
+    motors = [compiled.actuator(a).name for a in range(compiled.nu)]
+    assert motors == ["robot0_joint1", "robot0_left_finger_joint"]
+    assert compiled.actuator("robot0_joint1").ctrlrange.tolist() == [-40.0, 40.0]  # the URDF's effort
