@@ -224,6 +224,7 @@ def urdf_arm(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     (tmp_path / "arm.yaml").write_text(
         "name: DaeArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
     )
+    backdate(tmp_path / "arm.yaml")  # a spec edited seconds ago gets no request record
     yield package
     wait_for_writes()
 
