@@ -19,7 +19,9 @@ import pytest
 
 from assembler.build.service import wait_for_writes
 from assembler.cli import main
+from assembler.urdf.meshes import importable
 from tests.conftest import use_private_cache
+from tests.urdf.fixtures import ARM_URDF, write_package
 
 TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 
@@ -184,3 +186,23 @@ def test_a_bundle_never_replaces_an_xml_no_bundle_wrote(
     assert build("--bundle", "out") == 1
     assert capsys.readouterr().err == FOREIGN.format(path="out/WriteArm.xml") + "\n"
     assert (tmp_path / "out" / "WriteArm.xml").read_text() == "notes\n"
+
+
+@pytest.mark.skipif(not (importable("trimesh") and importable("collada")), reason="needs the urdf extra")
+@pytest.mark.parametrize(
+    "target",
+    ["ros/my_arm/urdf/my_arm.urdf", "ros/my_arm/meshes/cube.dae"],
+    ids=["the-urdf", "its-collada-mesh"],
+)
+def test_a_urdf_robot_never_writes_over_its_urdf_or_meshes(
+    target: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write_package(tmp_path / "ros", urdf=ARM_URDF)
+    (tmp_path / "urdf_arm.yaml").write_text(
+        "name: UrdfArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
+    )
+    before = (tmp_path / target).read_bytes()
+    capsys.readouterr()
+    assert main(["build", "urdf_arm.yaml", "--no-base", "-o", target]) == 1
+    assert capsys.readouterr().err == INPUT.format(path=target) + "\n"
+    assert (tmp_path / target).read_bytes() == before
