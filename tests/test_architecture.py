@@ -101,6 +101,7 @@ stay light, issue 16), with the names also imported under TYPE_CHECKING for type
 DEFERRED = {
     ("assembler.cli", "assembler.cli.quick_build"): "a cached build is answered before the commands load",
     ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
+    ("assembler.cli", "assembler.cache.settings"): "it imports MuJoCo: loaded inside the command's ending",
     ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
     ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
     ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",

@@ -20,15 +20,17 @@ import mujoco
 
 from assembler.build.compile import compile_and_emit, compile_home
 from assembler.cache.dependencies import Recorder, asset_files, verify
+from assembler.cache.folder import FolderInfo
+from assembler.cache.folder import clear as clear_folder
 from assembler.cache.inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
 from assembler.cache.mesh_swap import wait_for_fillers
-from assembler.cache.meshes import MESH_SHARE, default_mesh_store
-from assembler.cache.requests import default_request_store
+from assembler.cache.meshes import default_mesh_store
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
-from assembler.cache.store import CacheInfo, ModelStore
+from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
+from assembler.files.inputs import note_inputs
 from assembler.mjcf.keyframe import Keyframe
 
 
@@ -80,23 +82,17 @@ _recent = RecentModels()
 
 
 def default_store() -> ModelStore:
-    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``):
-    compiled models get the bound less the mesh store's share."""
-    bound = max_bytes()
-    return ModelStore(cache_dir(), bound - bound // MESH_SHARE)
+    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``;
+    the bound is the whole cache folder's, :mod:`assembler.cache.folder`)."""
+    return ModelStore(cache_dir(), max_bytes())
 
 
-def clear(store: ModelStore) -> CacheInfo:
-    """Empty ``store`` and the mesh store beside it, and forget the models this process kept from
-    it; returns what the model store held (and what could not be removed)."""
+def clear(store: ModelStore) -> FolderInfo:
+    """Empty the cache folder of ``store`` (every part: models, meshes, request records, converted
+    meshes, robosuite part files) and forget the models this process kept from it; returns what it
+    held (and what could not be removed)."""
     _recent.forget(str(store.directory))
-    meshes = default_mesh_store()
-    if meshes is not None and meshes.directory.parent == store.directory:
-        meshes.clear()
-    requests = default_request_store()
-    if requests.directory.parent == store.directory:
-        requests.clear()
-    return store.clear()
+    return clear_folder(store.directory)
 
 
 def wait_for_writes() -> None:
@@ -128,6 +124,13 @@ def _recorder(assembly: Assembly) -> Recorder:
     return Recorder([*assembly.read_files, *asset_files(assembly.mjspec)], assembly.read_files, known)
 
 
+def _built(build: Callable[[], Assembly]) -> Assembly:
+    """``build()``, its files noted as inputs no output may be written over."""
+    assembly = build()
+    note_inputs([*assembly.read_files, *asset_files(assembly.mjspec)])
+    return assembly
+
+
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
     decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
@@ -149,14 +152,14 @@ def compile_model(
     compiled and (with ``store``) kept for next time; with no key, compiled every time."""
     if key is None:
         counts.bypassed += 1
-        return compile_assembly(build(), meshes=cache)
+        return compile_assembly(_built(build), meshes=cache)
     keep = store
     models = default_store()
     model = load_entry(key)
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
-    assembly = build()
+    assembly = _built(build)
     recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
     if keep:
@@ -184,7 +187,7 @@ def compile_xml(
     """
     if key is None:
         counts.bypassed += 1
-        assembly = build()
+        assembly = _built(build)
         model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache and meshes)
         return CompiledModel(model, Keyframe.of(model)), xml
     models = default_store()
@@ -194,7 +197,7 @@ def compile_xml(
         counts.hits += 1
         return None, stored
     counts.misses += 1
-    assembly = build()
+    assembly = _built(build)
     recorder = _recorder(assembly)
     model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
     if store:

@@ -1,50 +1,32 @@
-"""The files a compiled model was made from, recorded by size, modification time and content.
+"""The files a compiled model was made from, recorded as :class:`~assembler.cache.file_state.FileState`.
 
-A cache entry stores one :class:`Dependency` per file the compile read: each part's MJCF file,
-the files it includes, and every mesh, height field, skin and texture file. On lookup a file whose
-size and modification time are unchanged is taken as unchanged (as ``make`` and ccache do); one
-whose stat differs is hashed again, so touching a mesh keeps the entry and editing it does not.
+A cache entry stores one state per file the compile read: each part's MJCF file, the files it
+includes, and every mesh, height field, skin and texture file. A lookup checks each as git checks
+its index (:func:`~assembler.cache.file_state.check_all`): size, times and inode unchanged and not
+racy, or hashed again and equal; a link re-pointed is a change.
 """
 
 from __future__ import annotations
 
-import hashlib
 import os
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, replace
 
 import mujoco
 
-_CHUNK = 1 << 20
+from assembler.cache.file_state import GRANULARITY_NS, FileState, Stat, check_all, stat_of, state_of
+from assembler.files.inputs import written_as
 
-RECENT_NS = 2_000_000_000
-"""Files modified this recently are not trusted: MuJoCo's in-process asset cache compares times in
+Dependency = FileState
+"""One input file of a compile, as it was when the compile read it."""
+
+RECENT_NS = GRANULARITY_NS
+"""Files modified this recently are not recorded: MuJoCo's in-process asset cache compares times in
 whole seconds, so a compile may still see the previous content of a mesh edited within the same
 second (ccache refuses too-new files for the same kind of reason)."""
 
-
-KnownDigest = Callable[[str, os.stat_result], "str | None"]
+KnownDigest = Callable[[str, Stat], "str | None"]
 """A digest some other record already holds for a file in this exact state (the mesh store's)."""
-
-
-@dataclass(frozen=True)
-class Dependency:
-    """One input file of a compile, as it was when the compile read it."""
-
-    path: str
-    size: int
-    mtime_ns: int
-    blake2b: str
-
-
-def content_digest(path: str) -> str:
-    """The file's BLAKE2b digest (hex)."""
-    digest = hashlib.blake2b(digest_size=32)
-    with open(path, "rb") as stream:
-        while chunk := stream.read(_CHUNK):
-            digest.update(chunk)
-    return digest.hexdigest()
 
 
 class Recorder:
@@ -60,16 +42,18 @@ class Recorder:
         known: KnownDigest | None = None,
     ) -> None:
         """``read_earlier``: files already read before the compile (a part's MJCF and its includes,
-        parsed when the part was made), with their stat from then: a change since then is a change.
-        ``known``: where a file's digest may already be recorded (mesh files hashed by the mesh
-        store), so the writer does not hash them again."""
+        parsed when the part was made), with their (size, mtime_ns) from then: a change since then
+        is a change. ``known``: where a file's digest may already be recorded (mesh files hashed by
+        the mesh store), so the writer does not hash them again."""
         self._known = known
         self._recent = time.time_ns() - RECENT_NS
-        self._stats: dict[str, tuple[int, int]] | None = dict(read_earlier or {})
+        self._earlier = dict(read_earlier or {})
+        self._stats: dict[str, Stat] | None = {}
+        read = set(paths) | set(self._earlier)
+        read |= {link for path in read for link in written_as(path)}  # links on the way, checked too
         try:
-            for path in sorted(set(paths) - set(self._stats)):
-                stat = os.stat(path)
-                self._stats[path] = (stat.st_size, stat.st_mtime_ns)
+            for path in sorted(read):
+                self._stats[path] = stat_of(path)
         except OSError:
             self._stats = None  # a missing file: the compile will say so
 
@@ -78,38 +62,27 @@ class Recorder:
         if self._stats is None:
             return None
         records = []
-        for path, (size, mtime_ns) in self._stats.items():
+        for path, stat in self._stats.items():
+            earlier = self._earlier.get(path)
+            if earlier is not None and earlier != stat[:2]:
+                return None
+            if stat[1] > self._recent:
+                return None
             try:
-                digest = self._known(path, os.stat(path)) if self._known is not None else None
-                digest = digest or content_digest(path)
-                stat = os.stat(path)  # after hashing: a change while hashing shows here
+                digest = self._known(path, stat) if self._known is not None else None
+                state = state_of(path, digest, stat if digest is not None else None)
+                if stat_of(path) != stat:  # after hashing: a change while hashing shows here
+                    return None
             except OSError:
                 return None
-            if (stat.st_size, stat.st_mtime_ns) != (size, mtime_ns) or mtime_ns > self._recent:
-                return None
-            records.append(Dependency(path, size, mtime_ns, digest))
+            records.append(state)
         return records
 
 
 def verify(dependencies: Sequence[Dependency]) -> list[Dependency] | None:
-    """The records refreshed to the files' current stat, or None when a file's content changed.
-
-    A record comes back unchanged (the same object) when its file's stat is unchanged, so the
-    caller can tell whether anything needs writing back.
-    """
-    current: list[Dependency] = []
-    for dependency in dependencies:
-        try:
-            stat = os.stat(dependency.path)
-            if stat.st_size == dependency.size and stat.st_mtime_ns == dependency.mtime_ns:
-                current.append(dependency)
-                continue
-            if stat.st_size != dependency.size or content_digest(dependency.path) != dependency.blake2b:
-                return None
-        except OSError:
-            return None
-        current.append(replace(dependency, mtime_ns=stat.st_mtime_ns))
-    return current
+    """The records refreshed to the files' current state, or None when a file changed (see
+    :func:`~assembler.cache.file_state.check_all`)."""
+    return check_all(dependencies)
 
 
 def asset_files(mjspec: mujoco.MjSpec) -> list[str]:
@@ -120,4 +93,4 @@ def asset_files(mjspec: mujoco.MjSpec) -> list[str]:
         files += [element.file for element in group if element.file]
     for texture in mjspec.textures:
         files += [file for file in (texture.file, *texture.cubefiles) if file]
-    return files
+    return [os.fspath(file) for file in files]

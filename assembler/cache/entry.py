@@ -13,24 +13,12 @@ import os
 from dataclasses import asdict, dataclass
 from typing import Any
 
-import xxhash
-
 from assembler.cache.dependencies import Dependency
 from assembler.cache.key import FORMAT
 
 MANIFEST_SUFFIX = ".json"
 MODEL_SUFFIX = ".mjb"
 XML_SUFFIX = ".xml"
-DIGEST = "xxh3_128"
-"""The hash of a model file's whole content, checked on every load from disk. XXH3 rather than a
-cryptographic hash: it is there to catch a damaged file (any change of any byte), not a forger (a
-writer of the cache folder could write any model), and it hashes a 44 MB model in a few
-milliseconds where BLAKE2b takes 20 times longer, on the path timed against MuJoCo's own load."""
-
-
-def content_digest(data: object) -> str:
-    """The :data:`DIGEST` of a buffer (bytes, a memory map, a numpy array), in hex."""
-    return xxhash.xxh3_128(data).hexdigest()  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True)
@@ -47,7 +35,7 @@ class Entry:
     """Exact size of the model file."""
 
     digest: str
-    """The :data:`DIGEST` of the model file's whole content."""
+    """The :data:`~assembler.cache.file_state.DIGEST` of the model file's whole content."""
 
     label: str
     """What was compiled, for people reading the folder (e.g. ``Panda0``)."""
@@ -63,7 +51,7 @@ class Entry:
     """Exact size of the XML file (its UTF-8 bytes)."""
 
     xml_digest: str = ""
-    """The :data:`DIGEST` of the XML file's whole content."""
+    """The :data:`~assembler.cache.file_state.DIGEST` of the XML file's whole content."""
 
     @property
     def manifest(self) -> str:

@@ -13,6 +13,8 @@ import dataclasses
 import functools
 import hashlib
 import json
+import os
+import sys
 from pathlib import Path
 
 import mujoco
@@ -20,7 +22,7 @@ import mujoco
 from assembler.cache.inputs import BuildInputs
 from assembler.version import __version__
 
-FORMAT = 3
+FORMAT = 4
 """Version of the entry layout and of the key's contents; bump it when either changes."""
 
 _PACKAGE = Path(__file__).resolve().parent.parent
@@ -41,6 +43,23 @@ def code_fingerprint() -> str:
     return f"{__version__}+{digest.hexdigest()}"
 
 
+PACKAGE_VARIABLES = ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH")
+"""The environment variables that decide where ``package://NAME`` leads (:mod:`assembler.files.paths`)."""
+
+
+def resolution_environment() -> dict[str, object]:
+    """What decides which files a build reads besides its spec: the package variables, the Python
+    environment and its import path (an installed package is a package root). Part of every key,
+    so a switched ``ROS_PACKAGE_PATH`` is a miss, never the other copy's model. The import path's
+    first entry is left out: it is the script's folder or the working folder, which differ between
+    ``assembler`` and ``python -c`` for one environment; relative names are resolved before keying."""
+    return {
+        **{name: os.environ.get(name, "") for name in PACKAGE_VARIABLES},
+        "prefix": sys.prefix,
+        "path": [os.path.abspath(entry) for entry in sys.path[1:]],
+    }
+
+
 def cache_key(inputs: BuildInputs) -> str | None:
     """The key of the assembly ``inputs`` describe, or None when it cannot be cached (a part is
     hand-written Python)."""
@@ -50,6 +69,7 @@ def cache_key(inputs: BuildInputs) -> str | None:
         "format": FORMAT,
         "assembler": code_fingerprint(),
         "mujoco": mujoco.__version__,
+        "environment": resolution_environment(),
         "inputs": dataclasses.asdict(inputs),
     }
     text = json.dumps(material, sort_keys=True, separators=(",", ":"))

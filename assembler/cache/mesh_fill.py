@@ -17,8 +17,10 @@ import os
 from collections.abc import Iterable
 from pathlib import Path
 
+from assembler.cache.file_state import settled
+from assembler.cache.file_state import stat_of as file_stat
 from assembler.cache.mesh_data import decode
-from assembler.cache.meshes import MeshStore, file_stat, settled
+from assembler.cache.meshes import MeshStore
 
 
 def fill_one(store: MeshStore, path: str, kind: str) -> bool:

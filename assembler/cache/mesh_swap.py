@@ -34,9 +34,10 @@ from typing import TypeVar
 
 import mujoco
 
+from assembler.cache.file_state import stat_of as file_stat
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, mesh_kind, msh_supported
 from assembler.cache.mesh_fill import fill
-from assembler.cache.meshes import MeshStore, default_mesh_store, file_stat
+from assembler.cache.meshes import MeshStore, default_mesh_store
 from assembler.mjcf.versions import mujoco_at_least
 
 Mesh = tuple[str, str]

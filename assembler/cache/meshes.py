@@ -6,7 +6,7 @@ reader sees a whole file or none, whichever processes write at once:
 
 - ``<size>-<key>.msh``, an entry: the ``.msh`` bytes (:mod:`assembler.cache.mesh_data`) behind a
   magic word and a BLAKE2b digest of the key and the bytes. The key is a digest of the source
-  file's BLAKE2b (:func:`assembler.cache.dependencies.content_digest`), its decoder and MuJoCo's
+  file's digest (:func:`assembler.cache.file_state.file_digest`), its decoder and MuJoCo's
   version: the same content anywhere on disk is one entry, and another MuJoCo decodes again. The
   source's size in the name lets a lookup skip hashing a file no entry can match (a new mesh). An entry that
   fails its digest (a flipped byte, a truncated write) is a miss and is removed, never a wrong
@@ -35,40 +35,17 @@ from pathlib import Path
 
 import mujoco
 
-from assembler.cache.dependencies import RECENT_NS, content_digest
+from assembler.cache.file_state import Stat, file_digest, settled, stat_of
+from assembler.cache.folder import GRACE_SECONDS, MESH_FILE
+from assembler.cache.folder import evict as evict_folder
 from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 
-FORMAT = 1
+FORMAT = 2
 """Version of the entry and record layout; part of every key."""
-
-MESH_SHARE = 4
-"""The mesh store may use 1/4 of ``ASSEMBLER_CACHE_MAX_BYTES`` (512 MiB by default): every mesh of
-robosuite's 19 robots, 16 grippers and 10 bases takes 109 MB as ``.msh``, and one entry serves
-every model that uses the file, so meshes need far less room than compiled models."""
 
 MAGIC = b"ASMMSH1\n"
 CHECK_BYTES = 32
-GRACE_SECONDS = 600.0
-"""Temporary files and claims younger than this may belong to a writer still at work."""
-
-_OWN_FILE = re.compile(r"^\.?(\d+-[0-9a-f]{40}\.(msh|claim)|[0-9a-f]{40}\.src)(\.\w+\.tmp)?$")
 _ENTRY = re.compile(r"^(\d+)-[0-9a-f]{40}\.msh$")
-
-Stat = tuple[int, int, int, int]
-"""(size, mtime_ns, ctime_ns, inode): what says a file is unchanged."""
-
-
-def file_stat(path: str) -> Stat:
-    """The stat fields the store trusts; raises OSError."""
-    stat = os.stat(path)
-    return (stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino)
-
-
-def settled(stat: Stat) -> bool:
-    """True when the file was last modified a few seconds ago or more (dependencies.RECENT_NS):
-    only then can an unchanged stat vouch for unchanged content, as a later write within the same
-    clock tick cannot go unseen. A write after an old modification time moves it to now."""
-    return stat[1] < time.time_ns() - RECENT_NS
 
 
 def _check(*parts: bytes) -> bytes:
@@ -140,22 +117,22 @@ class MeshStore:
         record["check"] = _check(json.dumps(fields).encode()).hex()
         self._write(self._record_name(path), json.dumps(record).encode())
 
-    def known_digest(self, path: str, stat: os.stat_result) -> str | None:
-        """The digest recorded for ``path`` in the state ``stat`` describes, if any (no hashing)."""
-        if not settled((stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino)):
+    def known_digest(self, path: str, stat: Stat) -> str | None:
+        """The digest recorded for ``path`` in the state ``stat``, if any (no hashing)."""
+        if not settled(stat):
             return None
-        return self.recorded(path, (stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_ino))
+        return self.recorded(path, stat)
 
     def digest(self, path: str) -> tuple[str, Stat] | None:
         """``path``'s digest and stat, from its record or by hashing it (and recording that);
         None when the file cannot be read or changes while it is hashed."""
         try:
-            stat = file_stat(path)
+            stat = stat_of(path)
             found = self.recorded(path, stat)
             if found is not None:
                 return found, stat
-            digest = content_digest(path)
-            if file_stat(path) != stat:
+            digest = file_digest(path)
+            if stat_of(path) != stat:
                 return None
         except OSError:
             return None
@@ -243,7 +220,7 @@ class MeshStore:
         try:
             with os.scandir(self.directory) as entries:
                 for item in entries:
-                    if _OWN_FILE.match(item.name):
+                    if MESH_FILE.match(item.name):
                         with contextlib.suppress(OSError):
                             stat = item.stat()
                             found.append((stat.st_mtime_ns, item.name, stat.st_size))
@@ -252,22 +229,13 @@ class MeshStore:
         return found
 
     def evict(self) -> None:
-        """Remove stale temporary files and claims, then the least recently used entries and
-        records until the folder fits in ``max_bytes``."""
+        """Remove stale temporary files and claims, then the least recently used parts of the whole
+        cache folder (this folder's parent, :mod:`assembler.cache.folder`) until it fits ``max_bytes``."""
         stale = time.time_ns() - int(GRACE_SECONDS * 1e9)
-        kept = []
-        for used, name, size in self._files():
-            if name.endswith((".tmp", ".claim")):
-                if used < stale:
-                    self._remove(name)
-            else:
-                kept.append((used, name, size))
-        total = sum(size for _, _, size in kept)
-        for _, name, size in sorted(kept):
-            if total <= self.max_bytes:
-                break
-            self._remove(name)
-            total -= size
+        for used, name, _ in self._files():
+            if name.endswith((".tmp", ".claim")) and used < stale:
+                self._remove(name)
+        evict_folder(self.directory.parent, self.max_bytes)
 
     def info(self) -> MeshStoreInfo:
         """What the folder holds now."""
@@ -283,8 +251,8 @@ class MeshStore:
 
 
 def default_mesh_store() -> MeshStore | None:
-    """The store the environment points at (``meshes/`` in the cache folder, a quarter of the
-    cache's bound), or None when the cache is off."""
+    """The store the environment points at (``meshes/`` in the cache folder, under the cache's one
+    bound), or None when the cache is off."""
     if cache_disabled():
         return None
-    return MeshStore(cache_dir() / "meshes", max_bytes() // MESH_SHARE)
+    return MeshStore(cache_dir() / "meshes", max_bytes())

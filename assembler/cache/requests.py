@@ -34,8 +34,10 @@ from typing import Any
 import mujoco
 
 from assembler.cache.dependencies import Dependency, verify
-from assembler.cache.key import code_fingerprint
-from assembler.cache.settings import cache_dir
+from assembler.cache.folder import evict as evict_folder
+from assembler.cache.key import code_fingerprint, resolution_environment
+from assembler.cache.settings import cache_dir, max_bytes
+from assembler.files.inputs import note_inputs
 
 FORMAT = 1
 """Version of the record layout and of the request key's contents."""
@@ -107,7 +109,7 @@ def request_key(request: Mapping[str, Any]) -> str | None:
         "format": FORMAT,
         "assembler": code_fingerprint(),
         "mujoco": mujoco.__version__,
-        "prefix": sys.prefix,
+        "environment": resolution_environment(),
         "path": [os.path.abspath(entry) for entry in sys.path],
         "cwd": os.getcwd(),
         "allowed": os.environ.get(ALLOW_VARIABLE, ""),
@@ -162,6 +164,7 @@ class RequestStore:
         current = verify(record.specs)
         if current is None:
             return None
+        note_inputs(state.path for state in current)
         with contextlib.suppress(OSError):
             if any(new is not old for new, old in zip(current, record.specs, strict=True)):
                 self.save(key, replace(record, specs=tuple(current)))
@@ -203,14 +206,7 @@ class RequestStore:
             return
         for _, path in sorted(records)[: max(0, len(records) - self.max_records)]:
             path.unlink(missing_ok=True)
-
-    def clear(self) -> None:
-        """Remove every record."""
-        with contextlib.suppress(OSError), os.scandir(self.directory) as entries:
-            for item in entries:
-                if item.name.endswith((".json", ".tmp")):
-                    with contextlib.suppress(OSError):
-                        os.unlink(item.path)
+        evict_folder(self.directory.parent, max_bytes())
 
 
 def default_request_store() -> RequestStore:

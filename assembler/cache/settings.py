@@ -11,8 +11,13 @@ point the cache elsewhere or switch it off by setting a variable:
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import os
 import re
+import shutil
+import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 from assembler.errors import AssemblerError
@@ -38,10 +43,47 @@ def cache_dir() -> Path:
     return root / "robot-assembler"
 
 
+_scratch: list[Path] = []
+
+
+def scratch_dir() -> Path:
+    """A folder of this process's own, removed at its exit: where files the cache would keep (a
+    converted mesh, a robosuite part file) go when the cache is off or cannot be written."""
+    if not _scratch:
+        folder = Path(tempfile.mkdtemp(prefix="robot-assembler-"))
+        atexit.register(shutil.rmtree, folder, True)
+        _scratch.append(folder)
+    return _scratch[0]
+
+
+def volatile_folders() -> list[Path]:
+    """Folders whose files may vanish (the cache folder, the scratch folder): a written model never
+    names a file in them."""
+    return [cache_dir(), *_scratch]
+
+
 def cache_disabled() -> bool:
     """True when ``ASSEMBLER_NO_CACHE`` asks for no cache."""
     value = os.environ.get(DISABLE_VARIABLE, "").strip().lower()
     return value not in ("", "0", "false", "no")
+
+
+@contextlib.contextmanager
+def switched_off(off: bool) -> Iterator[None]:
+    """With ``off``, the cache is off inside the block for every layer and every worker process
+    (``--no-cache``: nothing is read from the cache folder, also converted meshes and part files)."""
+    if not off:
+        yield
+        return
+    before = os.environ.get(DISABLE_VARIABLE)
+    os.environ[DISABLE_VARIABLE] = "1"
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(DISABLE_VARIABLE, None)
+        else:
+            os.environ[DISABLE_VARIABLE] = before
 
 
 def parse_size(text: str) -> int:

@@ -18,7 +18,6 @@ from __future__ import annotations
 import contextlib
 import mmap
 import os
-import re
 import secrets
 import tempfile
 import threading
@@ -31,15 +30,15 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.cache.dependencies import Dependency, Recorder, verify
-from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry, content_digest
+from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry
+from assembler.cache.file_state import buffer_digest
+from assembler.cache.folder import GRACE_SECONDS, MODEL_FILE
+from assembler.cache.folder import evict as evict_folder
+from assembler.files.inputs import note_inputs
 from assembler.mjcf import mujoco_warnings
 
 TEMP_SUFFIX = ".tmp"
-GRACE_SECONDS = 600.0
-"""A temporary or unreferenced model file younger than this may belong to a writer still at work."""
 
-_OWN_FILE = re.compile(r"^\.?[0-9a-f]{40}(-[0-9a-f]{12}\.(mjb|xml)|\.json)(\.\w+\.tmp)?$")
-"""Manifests, model and XML files and their temporary files (see :class:`Entry` and ``_write``)."""
 
 _writers: list[threading.Thread] = []
 _pending: dict[tuple[str, str], threading.Thread] = {}
@@ -131,7 +130,7 @@ class ModelStore:
                 if os.fstat(stream.fileno()).st_size != entry.model_bytes:
                     return None
                 with mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ) as content:
-                    if content_digest(content) != entry.digest:
+                    if buffer_digest(content) != entry.digest:
                         return None
                 with mujoco_warnings.collected() as warned:
                     model = mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
@@ -147,6 +146,7 @@ class ModelStore:
         current = verify(entry.dependencies)
         if current is None:
             return None  # an input changed: the caller compiles and replaces the entry
+        note_inputs(state.path for state in current)
         model = self._open_model(entry)
         if model is None:
             self._discard(entry)
@@ -163,11 +163,13 @@ class ModelStore:
         from is unchanged and the XML file is whole (else it is removed: a miss). The model file
         is not read: the XML does not need it."""
         entry = self._read_entry(key)
-        if entry is None or not entry.xml or verify(entry.dependencies) is None:
+        current = verify(entry.dependencies) if entry is not None and entry.xml else None
+        if entry is None or current is None:
             return None
+        note_inputs(state.path for state in current)
         try:
             data = (self.directory / entry.xml).read_bytes()
-            if len(data) == entry.xml_bytes and content_digest(data) == entry.xml_digest:
+            if len(data) == entry.xml_bytes and buffer_digest(data) == entry.xml_digest:
                 with contextlib.suppress(OSError):
                     self._touch(entry.manifest)
                 return data.decode("utf-8")
@@ -249,7 +251,7 @@ class ModelStore:
             key=key,
             model=f"{key}-{secrets.token_hex(6)}{MODEL_SUFFIX}",
             model_bytes=buffer.size,
-            digest=content_digest(buffer),
+            digest=buffer_digest(buffer),
             label=label,
             dependencies=(),
         )
@@ -307,40 +309,27 @@ class ModelStore:
         """The cache's own files: eviction and ``clear`` never touch anything else in the folder."""
         try:
             with os.scandir(self.directory) as entries:
-                return [e for e in entries if _OWN_FILE.match(e.name) and e.is_file()]
+                return [e for e in entries if MODEL_FILE.match(e.name) and e.is_file()]
         except OSError:
             return []
 
     def evict(self) -> None:
-        """Remove stale temporary files and orphaned models, then the least recently used entries
-        until everything fits in ``max_bytes``."""
+        """Remove stale temporary files and orphaned models, then the least recently used parts of
+        the whole cache folder (:mod:`assembler.cache.folder`) until it fits in ``max_bytes``."""
         now = time.time()
-        manifests: list[tuple[int, str, int]] = []  # last use (ns), name, size
-        sizes: dict[str, tuple[int, float]] = {}
+        referenced: set[str] = set()
+        others: list[tuple[str, float]] = []
         for item in self._files():
             with contextlib.suppress(OSError):
-                stat = item.stat()
                 if item.name.endswith(MANIFEST_SUFFIX):
-                    manifests.append((stat.st_mtime_ns, item.name, stat.st_size))
+                    entry = self._read_entry(item.name.removesuffix(MANIFEST_SUFFIX))
+                    referenced.update((entry.model, entry.xml) if entry is not None else ())
                 else:
-                    sizes[item.name] = (stat.st_size, stat.st_mtime)
-        models: dict[str, tuple[str, str]] = {}  # manifest -> its model and XML files
-        for _, name, _ in manifests:
-            entry = self._read_entry(name.removesuffix(MANIFEST_SUFFIX))
-            if entry is not None:
-                models[name] = (entry.model, entry.xml)
-        referenced = {file for files in models.values() for file in files if file}
-        for name, (_, mtime) in list(sizes.items()):
+                    others.append((item.name, item.stat().st_mtime))
+        for name, mtime in others:
             if name not in referenced and now - mtime > GRACE_SECONDS:
                 self._remove(name)
-                del sizes[name]
-        total = sum(size for size, _ in sizes.values()) + sum(size for _, _, size in manifests)
-        for _, name, size in sorted(manifests):
-            if total <= self.max_bytes:
-                break
-            files = models.get(name, ("", ""))
-            total -= size + sum(sizes.get(file, (0, 0.0))[0] for file in files)
-            self._remove(name, *files)
+        evict_folder(self.directory, self.max_bytes)
 
     def info(self) -> CacheInfo:
         """Location, number of entries, bytes used and the limit."""
@@ -369,4 +358,4 @@ class ModelStore:
 
 def _with_xml(entry: Entry, name: str, data: bytes) -> Entry:
     """``entry`` naming ``name`` as its XML file, whose content is ``data``."""
-    return replace(entry, xml=name, xml_bytes=len(data), xml_digest=content_digest(data))
+    return replace(entry, xml=name, xml_bytes=len(data), xml_digest=buffer_digest(data))

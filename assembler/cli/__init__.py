@@ -23,11 +23,13 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     def command() -> int:
         args = parse(argv)
-        if args.command == "build":  # a build made before is answered before any spec is read
-            answered = importlib.import_module("assembler.cli.quick_build").answer(args)
-            if answered is not None:
-                return int(answered)
-        dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
-        return int(dispatch.run_command(args))
+        settings = importlib.import_module("assembler.cache.settings")  # imports MuJoCo: inside the ending
+        with settings.switched_off(bool(getattr(args, "no_cache", False))):
+            if args.command == "build":  # a build made before is answered before any spec is read
+                answered = importlib.import_module("assembler.cli.quick_build").answer(args)
+                if answered is not None:
+                    return int(answered)
+            dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
+            return int(dispatch.run_command(args))
 
     return end_cleanly(command)

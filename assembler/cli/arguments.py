@@ -6,6 +6,7 @@ own module, imported only when that command runs (:data:`COMMANDS`).
 from __future__ import annotations
 
 import argparse
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -386,6 +387,18 @@ def build_parser() -> argparse.ArgumentParser:
 def parse(argv: Sequence[str] | None = None) -> argparse.Namespace:
     """The command line, with the options given before and after the command joined."""
     args = build_parser().parse_args(argv)
-    args.specs = [*args.specs, *args.specs_after]
-    args.allow_path = [*args.allow_path, *args.allow_path_after]
+    args.specs = _once([*args.specs, *args.specs_after])
+    args.allow_path = _once([*args.allow_path, *args.allow_path_after])
     return args
+
+
+def _once(paths: Sequence[str]) -> list[str]:
+    """``paths`` in order, each folder once (``--specs a --specs ./a/`` reads ``a`` once)."""
+    seen: set[str] = set()
+    kept = []
+    for path in paths:
+        where = os.path.realpath(path)
+        if where not in seen:
+            seen.add(where)
+            kept.append(path)
+    return kept

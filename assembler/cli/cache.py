@@ -1,4 +1,5 @@
-"""``assembler cache info|clear``: where the compiled-model cache is, how full, and emptying it."""
+"""``assembler cache info|clear``: where the cache is, what each of its parts holds, and emptying
+it (every part: :mod:`assembler.cache.folder`)."""
 
 from __future__ import annotations
 
@@ -6,7 +7,8 @@ import argparse
 
 from assembler.build.service import clear, default_store
 from assembler.cache import cache_disabled
-from assembler.cache.meshes import default_mesh_store
+from assembler.cache.folder import LABELS
+from assembler.cache.folder import info as folder_info
 from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.cli.common import table
 from assembler.errors import AssemblerError
@@ -22,9 +24,9 @@ def run(args: argparse.Namespace) -> int:
                 f"could not remove {len(before.not_removed)} file(s) from {display_path(before.directory)}; "
                 f"first: {before.not_removed[0]}"
             )
+        files = sum(part.files for part in before.parts.values())
         print(
-            f"removed {before.entries} {'entry' if before.entries == 1 else 'entries'} "
-            f"({format_size(before.total_bytes)}) "
+            f"removed {files} file{'s' if files != 1 else ''} ({format_size(before.total_bytes)}) "
             f"from {display_path(before.directory)}"
         )
         return 0
@@ -33,17 +35,16 @@ def run(args: argparse.Namespace) -> int:
         status = f"disabled ({DISABLE_VARIABLE} is set)"
     else:
         status = f"unusable: {info.problem}" if info.problem else "enabled"
-    meshes = default_mesh_store()
-    mesh_info = meshes.info() if meshes is not None else None
+    whole = folder_info(store.directory)
     rows = [
         ("location", display_path(info.directory)),
         ("entries", str(info.entries)),
-        ("size", format_size(info.total_bytes)),
-        (
-            "meshes",
-            f"{mesh_info.entries} decoded ({format_size(mesh_info.total_bytes)})" if mesh_info else "-",
+        *(
+            (LABELS[part], f"{found.files} files ({format_size(found.total_bytes)})")
+            for part, found in whole.parts.items()
         ),
-        ("limit", f"{format_size(max_bytes())} ({MAX_BYTES_VARIABLE}), models and meshes together"),
+        ("size", format_size(whole.total_bytes)),
+        ("limit", f"{format_size(max_bytes())} ({MAX_BYTES_VARIABLE}), every part together"),
         ("status", status),
     ]
     print(table(rows))

@@ -6,8 +6,9 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from assembler.build.override_effects import overrides_without_effect
+from assembler.build.override_effects import overrides_without_effect, superseded
 from assembler.errors import AssemblerError
+from assembler.files.inputs import note_inputs
 from assembler.models import RobotModel
 from assembler.registry.arguments import DEFAULT, is_spec_file
 from assembler.registry.catalog import register_with_siblings
@@ -59,19 +60,42 @@ def assembled(args: argparse.Namespace, overrides: Sequence[Override] | None = N
         arms = getattr(robot_class(name).spec, "arms", ())
         grippers = {arm: None for arm in arms}
     changes = override_flags(args) if overrides is None else overrides
-    return assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
+    robot = assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
+    note_inputs(spec_files(robot))
+    return robot
+
+
+def spec_files(robot: RobotModel) -> list[str]:
+    """Every spec file the robot, its base and grippers were made from (parents included)."""
+    parts = [type(robot), *(type(part) for part in robot.models)]
+    documents = [getattr(getattr(part, "loaded", None), "document", None) for part in parts]
+    return [origin[0] for document in documents for origin in getattr(document, "origins", ())]
 
 
 def idle_override_warnings(args: argparse.Namespace) -> list[str]:
-    """A warning line per ``--set`` that changes nothing in the compiled model."""
-    idle = overrides_without_effect(
-        lambda changes: assembled(args, changes), override_flags(args), use_cache(args)
-    )
-    return [
-        f"warning: {override.label}{override.key} changes nothing in the compiled model; "
-        "see what else in the spec sets it"
-        for override in idle
-    ]
+    """A warning line per ``--set`` field given more than once (only the last counts), and per
+    ``--set`` that changes nothing in the compiled model."""
+    overrides = override_flags(args)
+    idle = overrides_without_effect(lambda changes: assembled(args, changes), overrides, use_cache(args))
+    replaced = {id(override) for override, gone in zip(overrides, superseded(overrides), strict=True) if gone}
+    repeats: dict[str, int] = {}
+    for override in overrides:
+        repeats[override.key] = repeats.get(override.key, 0) + 1
+    lines = []
+    for key, count in repeats.items():
+        if count > 1:
+            lines.append(f"warning: --set {key} is given {count} times; only the last counts")
+    for override in idle:
+        if id(override) in replaced and repeats[override.key] == 1:  # replaced by a field containing it
+            lines.append(
+                f"warning: --set {override.key} is replaced by a later --set of a field containing it"
+            )
+        elif id(override) not in replaced:
+            lines.append(
+                f"warning: {override.label}{override.key} changes nothing in the compiled model; "
+                "see what else in the spec sets it"
+            )
+    return lines
 
 
 def use_cache(args: argparse.Namespace) -> bool:

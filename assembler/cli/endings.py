@@ -4,7 +4,9 @@
 - Ctrl-C: ``interrupted``, exit 130 (128 + SIGINT, as shells report it);
 - standard output closed early (``assembler list | head -1``): silent, exit 141 (128 + SIGPIPE), as
   ``git`` and ``cat`` end; the reader has what it wanted;
-- standard output cannot be written (``> /dev/full``): one line naming the reason, exit 1;
+- standard output cannot be written (``> /dev/full``, or closed: ``>&-``): one line naming the
+  reason, exit 1; a closed standard stream is first pointed at ``/dev/null``, so no file the command
+  opens can take its number and receive what a library prints;
 - a MuJoCo warning: one line ``warning: ...`` on standard error, the command goes on.
 
 Anything else is a bug in the assembler and is allowed to crash with its traceback.
@@ -13,6 +15,7 @@ Anything else is a bug in the assembler and is allowed to crash with its traceba
 from __future__ import annotations
 
 import errno
+import io
 import os
 import sys
 import warnings
@@ -43,8 +46,38 @@ def _silence_stdout() -> None:
     os.close(null)
 
 
+class _ClosedOutput(io.TextIOBase):
+    """Standard output that was closed when the command started: writing to it is an error."""
+
+    def write(self, text: str) -> int:
+        if not text:
+            return 0
+        raise OSError(errno.EBADF, "it was closed (>&-)")
+
+    def fileno(self) -> int:
+        return 1
+
+
+def _fill_closed_streams() -> None:
+    """Point a closed standard stream at /dev/null (before anything opens a file that would take
+    its number); a closed standard output then refuses writes (:class:`_ClosedOutput`)."""
+    for descriptor in (0, 1, 2):
+        try:
+            os.fstat(descriptor)
+        except OSError:
+            null = os.open(os.devnull, os.O_RDWR)
+            if null != descriptor:
+                os.dup2(null, descriptor)
+                os.close(null)
+    if sys.stdout is None:
+        sys.stdout = _ClosedOutput()
+    if sys.stderr is None:
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - the process's stream, open until it ends
+
+
 def end_cleanly(command: Callable[[], int]) -> int:
     """Run ``command`` and turn every way it can end into an exit code and at most one line per problem."""
+    _fill_closed_streams()
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("always", MujocoWarning)
@@ -89,7 +122,7 @@ def _caused_by_ctrl_c(error: BaseException) -> bool:
     return False
 
 
-OUTPUT_ERRORS = frozenset({errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT})
+OUTPUT_ERRORS = frozenset({errno.ENOSPC, errno.EIO, errno.EFBIG, errno.EDQUOT, errno.EBADF})
 """Errors of writing a stream: the files the assembler writes itself report their own path."""
 
 

@@ -12,9 +12,9 @@ from pathlib import Path
 from typing import Any
 
 from assembler.build.repeat import KeyedRequest, answered_xml, keyed
+from assembler.cache.settings import volatile_folders
+from assembler.files.bundles import bundle_xml, write_model
 from assembler.files.paths import allowing, display_path
-from assembler.files.writing import write_atomically
-from assembler.mjcf.emit import bundle_xml
 from assembler.registry.arguments import spec_file_path
 
 
@@ -59,9 +59,10 @@ def write_xml(args: argparse.Namespace, xml: str, default_name: str) -> None:
         target = bundle_xml(xml, Path(args.bundle), name)
         print(f"wrote {display_path(target)} with its assets", file=sys.stderr)
     elif args.output:
-        target = Path(args.output)
-        write_atomically(target, xml)
-        print(f"wrote {display_path(target)}", file=sys.stderr)
+        target, copied = write_model(xml, Path(args.output), volatile_folders())
+        plural = "s" if copied != 1 else ""
+        kept = f" and {copied} cached asset{plural} it names in {display_path(target)}-assets"
+        print(f"wrote {display_path(target)}{kept if copied else ''}", file=sys.stderr)
     else:
         sys.stdout.write(xml)
 

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError, SpecError
 from assembler.files.extras import install_hint
+from assembler.files.inputs import note_resolution
 from assembler.files.repositories import MARKER, find_repository, git_top
 
 PACKAGE_SCHEME = "package://"
@@ -138,6 +139,7 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
         raise error(f"{what}{path}: cannot resolve this path ({problem})") from None
     if any(resolved.is_relative_to(root) for root in roots):
         _homes.setdefault(resolved, set()).update(_resolved_folder(home) for home in homes)
+        note_resolution(path, resolved)  # a link on the way: the cache checks it was not re-pointed
         return resolved
     written = Path(os.path.normpath(os.path.abspath(path)))
     link = f" (a link to {display_path(resolved)})" if resolved != written else ""

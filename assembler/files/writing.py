@@ -1,9 +1,16 @@
-"""Writing the user's files: atomically, with their usual permissions, every failure one line.
+"""The one door for writing the user's files: atomically, with their usual permissions, only over
+what may be replaced, every failure one line.
 
 A failed build must never leave a partial file or clobber the user's previous output, so every
 file is written to a temporary file in the target folder and moved into place with one rename.
 A file system error (no permission, disk full, a folder in the way, a name too long) is an
 :class:`AssemblerError` naming the path; the old file, if any, is left as it was.
+
+A target is replaced only when it is a regular file (or nothing): never a device, a FIFO, a socket
+or a symbolic link (``-o /dev/full`` run as root would otherwise turn the device into a file), and
+never a file this process read as an input of what it builds (:mod:`assembler.files.inputs`: the
+spec, its MJCF and includes, meshes, the URDF), which the next build would need. Re-running a build
+onto its own earlier output replaces that output, as it should.
 """
 
 from __future__ import annotations
@@ -11,11 +18,13 @@ from __future__ import annotations
 import contextlib
 import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
 from assembler.errors import AssemblerError
+from assembler.files.inputs import input_at
 from assembler.files.paths import display_path
 
 TEMPORARY_NAME_STEM = 64
@@ -61,6 +70,40 @@ def cannot_write(path: Path) -> Iterator[None]:
         raise AssemblerError(f"cannot write {shown(path)}: {reason}") from None
 
 
+_KINDS = (
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISFIFO, "a FIFO (named pipe)"),
+    (stat.S_ISSOCK, "a socket"),
+)
+
+
+def check_target(path: Path) -> None:
+    """Stop unless ``path`` may be replaced by an output: nothing is there, or a regular file that is
+    no input of this process's build. A folder is left to the write itself (``Is a directory``)."""
+    try:
+        found = os.lstat(path)
+    except (OSError, ValueError):
+        return  # nothing there (or a path the write will report)
+    if stat.S_ISLNK(found.st_mode):
+        raise AssemblerError(
+            f"cannot write {shown(path)}: it is a symbolic link (to {os.readlink(path)}); an output "
+            "replaces only a regular file: remove the link or choose another path"
+        )
+    for test, kind in _KINDS:
+        if test(found.st_mode):
+            raise AssemblerError(
+                f"cannot write {shown(path)}: it is {kind}, not a regular file; an output replaces only a "
+                "regular file: choose another path"
+            )
+    source = input_at(path)
+    if source is not None:
+        raise AssemblerError(
+            f"cannot write {shown(path)}: it is {display_path(source)}, an input of this build; writing "
+            "there would destroy it: choose another path"
+        )
+
+
 def make_folder(path: Path) -> None:
     """Create ``path`` and its parents if needed; a failure is one line naming it."""
     with cannot_write(path):
@@ -91,6 +134,7 @@ def _temporary(target: Path) -> tuple[int, str]:
 
 
 def _write_replacing(path: Path, data: bytes) -> None:
+    check_target(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = _temporary(path)
     try:
@@ -99,6 +143,7 @@ def _write_replacing(path: Path, data: bytes) -> None:
             stream.write(data)
             stream.flush()
             os.fsync(stream.fileno())
+        check_target(path)  # again: something may have been put there meanwhile
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
@@ -114,12 +159,14 @@ def write_atomically(path: Path, content: str | bytes) -> None:
 
 def copy_atomically(source: Path, target: Path) -> None:
     """Copy ``source`` to ``target`` the same way (a failure names ``target``)."""
+    check_target(target)
     with cannot_write(target):
         handle, temporary = _temporary(target)
         try:
             os.fchmod(handle, _mode_for(target))
             os.close(handle)
             shutil.copyfile(source, temporary)
+            check_target(target)
             os.replace(temporary, target)
         except BaseException:
             Path(temporary).unlink(missing_ok=True)

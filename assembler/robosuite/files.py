@@ -1,45 +1,37 @@
-"""MJCF text written for robosuite, which reads models from files: content-addressed files in the
-cache folder (atomic, so a killed run never leaves a half file for the next one), remembered per
-process so an environment's every reset does not write again."""
+"""MJCF text written for robosuite, which reads models from files: files named by their content in
+the cache's ``robosuite/`` folder (:mod:`assembler.cache.content`), kept across processes and
+verified on every use: a warm ``robosuite.make`` writes nothing, and a part file edited in the cache
+is made again, never simulated. With the cache off they go to a folder of the process's own."""
 
 from __future__ import annotations
 
-import hashlib
-import tempfile
-from pathlib import Path
+import dataclasses
+import json
+from collections.abc import Callable, Iterable
 
-from assembler.cache.settings import cache_dir
-from assembler.files.writing import write_atomically
+import mujoco
 
-FOLDER = "robosuite"
-"""Below the cache folder."""
-
-_written: dict[str, Path] = {}
+from assembler.cache.content import PARTS, content_folder, recorded_text_file, text_file
+from assembler.cache.file_state import buffer_digest
+from assembler.cache.key import FORMAT, code_fingerprint, resolution_environment
 
 
 def written_file(text: str) -> str:
-    """The path of a file holding ``text`` (written once per content)."""
-    digest = hashlib.sha256(text.encode()).hexdigest()
-    path = _written.get(digest)
-    if path is not None and path.is_file():
-        return str(path)
-    folder = _folder()
-    path = folder / f"{digest[:32]}.xml"
-    if not path.is_file():
-        write_atomically(path, text)
-    _written[digest] = path
-    return str(path)
+    """The path of a file holding ``text`` (written only when no whole one is there)."""
+    return str(text_file(content_folder(PARTS), text, ".xml"))
 
 
-def _folder() -> Path:
-    """The cache's ``robosuite/`` folder, or a temporary one when the cache folder cannot be written."""
-    folder = cache_dir() / FOLDER
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-        probe = tempfile.NamedTemporaryFile(dir=folder, delete=True)  # noqa: SIM115 - a check, closed at once
-        probe.close()
-        return folder
-    except OSError:
-        fallback = Path(tempfile.gettempdir()) / f"robot-assembler-{FOLDER}"
-        fallback.mkdir(parents=True, exist_ok=True)
-        return fallback
+def kept_file(inputs: object, read: Iterable[str], emit: Callable[[], str]) -> str:
+    """The part file of ``inputs`` (a part's or an assembly's build inputs, plain frozen data), kept
+    across processes: found by a key of the inputs, the assembler's code, MuJoCo's version and the
+    resolution environment, and served without ``emit()`` while the files in ``read`` (its MJCF and
+    includes) are unchanged and the file is whole."""
+    material = {
+        "format": FORMAT,
+        "assembler": code_fingerprint(),
+        "mujoco": mujoco.__version__,
+        "environment": resolution_environment(),
+        "inputs": dataclasses.asdict(inputs) if dataclasses.is_dataclass(inputs) else repr(inputs),  # type: ignore[arg-type]
+    }
+    key = buffer_digest(json.dumps(material, sort_keys=True, default=repr).encode())
+    return str(recorded_text_file(content_folder(PARTS), key, read, emit, ".xml"))

@@ -7,9 +7,10 @@ A COLLADA file is read through one bounded read (:data:`assembler.files.limits.M
 refused if it is an archive or declares a DTD, and handed to trimesh as bytes, so trimesh opens
 no file itself (no texture, nothing a crafted file names). The conversion (COLLADA through pycollada):
 its scene graph's transforms are applied and its unit (``<unit meter>``) is turned into metres, as
-ROS tools show it. The OBJ is written once into ``<cache folder>/converted-meshes/``, named by the
-source file's content digest, so an edited source gives a new file and concurrent processes
-agree on the name. Without trimesh the file is reported once, with what to install.
+ROS tools show it. The OBJ is kept in the cache's one store (``converted-meshes/``,
+:mod:`assembler.cache.content`), named by the source file's digest and its own, and verified on
+every use: an edited source gives a new file, an edited conversion is made again, and with the
+cache off nothing is read from it. Without trimesh the file is reported once, with what to install.
 
 MuJoCo's URDF import names each mesh after its file's stem; before MuJoCo 4.0 two files with one
 stem (``visual/link1.stl`` and ``collision/link1.stl``, common in vendors' packages) became one mesh,
@@ -19,20 +20,18 @@ to MuJoCo as a copy named ``<stem>-<digest>`` in the same folder as the conversi
 
 from __future__ import annotations
 
-import hashlib
 import importlib.util
 import io
-import os
 import shutil
 import sys
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from assembler.cache.settings import DIR_VARIABLE, cache_dir
+from assembler.cache.content import CONVERTED, content_folder, kept_file
+from assembler.cache.file_state import buffer_digest, file_digest
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
 from assembler.files.limits import MAX_DAE_BYTES
@@ -67,16 +66,13 @@ def _install_converter() -> str:
     return f"{install_command('urdf')}, which brings trimesh and pycollada"
 
 
-_CHUNK = 1 << 20
-
-
 class MeshConversionError(Exception):
     """A mesh could not be made readable; the message says which file and what to do."""
 
 
 def converted_dir() -> Path:
-    """Where converted meshes are kept (below the cache folder, beside the compiled models)."""
-    return cache_dir() / "converted-meshes"
+    """Where converted meshes are kept (below the cache folder; this process's own with the cache off)."""
+    return content_folder(CONVERTED)
 
 
 def check_mesh_format(path: Path, shown: str) -> None:
@@ -100,14 +96,6 @@ def check_mesh_format(path: Path, shown: str) -> None:
 def needs_conversion(path: Path) -> bool:
     """True for a mesh file whose format MuJoCo does not read."""
     return path.suffix.lower() not in READABLE_SUFFIXES
-
-
-def _digest(path: Path) -> str:
-    digest = hashlib.blake2b(digest_size=16)
-    with path.open("rb") as stream:
-        while chunk := stream.read(_CHUNK):
-            digest.update(chunk)
-    return digest.hexdigest()
 
 
 def _read_dae(source: Path) -> bytes:
@@ -143,31 +131,10 @@ def converter_available() -> bool:
     return importable("trimesh")
 
 
-def _digest_name(source: Path, suffix: str, digest: str) -> Path:
-    return converted_dir() / f"{source.stem}-{digest}{suffix}"
-
-
-def _write_atomically(target: Path, write: Callable[[str], object]) -> None:
-    """``write(temporary path)``, then the file appears whole under ``target`` (another process sees
-    all of it or nothing)."""
-    try:
-        target.parent.mkdir(parents=True, exist_ok=True)
-        descriptor, temporary = tempfile.mkstemp(dir=target.parent, suffix=target.suffix + ".tmp")
-    except OSError as error:
-        raise MeshConversionError(
-            f"cannot write the converted mesh to {target.parent} ({error.strerror or error}); make the "
-            f"cache folder writable or point {DIR_VARIABLE} at one that is"
-        ) from None
-    os.close(descriptor)
-    try:
-        write(temporary)
-        os.replace(temporary, target)
-    except OSError as error:
-        raise MeshConversionError(
-            f"cannot write the converted mesh {target} ({error.strerror or error})"
-        ) from None
-    finally:
-        Path(temporary).unlink(missing_ok=True)
+def _kept(source: Path, digest: str, suffix: str, make: Callable[[str], object]) -> Path:
+    """The verified file made from ``source`` (content ``digest``), by ``make(temporary path)`` when
+    none is whole, in the one store (:mod:`assembler.cache.content`)."""
+    return kept_file(converted_dir(), f"{source.stem}-{digest}", suffix, make)
 
 
 def _confined(made: Path) -> Path:
@@ -178,13 +145,13 @@ def _confined(made: Path) -> Path:
 
 def renamed_copy(source: Path) -> Path:
     """A copy of ``source`` under a name no other mesh has (made once per content)."""
-    target = _digest_name(source, source.suffix, _digest(source))
-    if not target.is_file():
-        _write_atomically(target, lambda temporary: shutil.copyfile(source, temporary))
-    return _confined(target)
+    made = _kept(
+        source, file_digest(source), source.suffix, lambda temporary: shutil.copyfile(source, temporary)
+    )
+    return _confined(made)
 
 
-def _convert(source: Path, data: bytes, target: Path) -> None:
+def _convert(source: Path, data: bytes, target: str) -> None:
     import trimesh  # the optional extra: imported only when a mesh needs it
 
     try:  # bytes, not a path: trimesh then has no folder to resolve a texture or another file in
@@ -208,12 +175,7 @@ def _convert(source: Path, data: bytes, target: Path) -> None:
             "infinite <unit>, transform or vertex); fix the file"
         )
     # No normals: MuJoCo computes its own, and trimesh's take minutes for Panda's meshes without scipy.
-    _write_atomically(
-        target,
-        lambda temporary: mesh.export(
-            temporary, file_type="obj", include_normals=False, include_texture=False
-        ),
-    )
+    mesh.export(target, file_type="obj", include_normals=False, include_texture=False)
 
 
 def readable_mesh(source: Path) -> Path:
@@ -234,7 +196,5 @@ def readable_mesh(source: Path) -> Path:
             f"convert it is not installed; {_install_converter()}, or convert it to STL/OBJ yourself"
         )
     data = _read_dae(source)
-    target = _digest_name(source, ".obj", hashlib.blake2b(data, digest_size=16).hexdigest())
-    if not target.is_file():
-        _convert(source, data, target)
-    return _confined(target)
+    made = _kept(source, buffer_digest(data), ".obj", lambda temporary: _convert(source, data, temporary))
+    return _confined(made)

@@ -308,8 +308,9 @@ def test_least_recently_used_entries_are_evicted_first(
 ) -> None:
     load("Sparrow7", idn=0)
     one_entry = default_store().info().total_bytes
-    # Room for two and a half models: the models' share is three quarters of the bound.
-    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(int(2.5 * one_entry * 4 / 3)))
+    others = sum(path.stat().st_size for path in private_cache.rglob("*") if path.is_file()) - one_entry
+    # Room for two and a half models besides the other parts (decoded meshes): one bound counts all.
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(int(2.5 * one_entry + others)))
     load("Sparrow7", idn=1)
     load("Sparrow7", idn=0)  # a hit: idn 0 is now more recent than idn 1
     load("Sparrow7", idn=2)  # three entries do not fit: idn 1 goes
@@ -408,10 +409,11 @@ def test_cache_info_and_clear(private_cache: Path, capsys: pytest.CaptureFixture
     assert main(["cache", "info"]) == 0
     rows = dict(line.split(None, 1) for line in capsys.readouterr().out.splitlines())
     assert rows["location"] == "model-cache" and rows["entries"] == "1" and rows["status"] == "enabled"
-    assert rows["limit"] == "2.0 GB (ASSEMBLER_CACHE_MAX_BYTES), models and meshes together"
+    assert rows["limit"] == "2.0 GB (ASSEMBLER_CACHE_MAX_BYTES), every part together"
     (private_cache / "notes.txt").write_text("mine")
     assert main(["cache", "clear"]) == 0
-    assert capsys.readouterr().out.startswith("removed 1 entry (")
+    # the entry's manifest and model, and the record of the request that made them
+    assert capsys.readouterr().out.startswith("removed 3 files (")
     assert [path.name for path in private_cache.iterdir()] == ["notes.txt"]
 
 

@@ -156,9 +156,12 @@ def test_eviction_counts_and_removes_the_xml_files(monkeypatch: pytest.MonkeyPat
         assembler.assemble(name).get_xml()
         wait_for_writes()
     store = default_store()
-    total = sum(path.stat().st_size for path in store.directory.iterdir() if path.is_file())
+    total = sum(path.stat().st_size for path in store.directory.rglob("*") if path.is_file())
     kept = sum(path.stat().st_size for path in store.directory.iterdir() if "json" in path.name)
-    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(total - 1 + total // 4))  # the mesh share is 1/4
+    # One bound counts every part, request records too (oldest first: Sparrow7's record, its entry,
+    # then Finch6's record): a byte less than all the rest makes Sparrow7's entry go.
+    records = total - sum(path.stat().st_size for path in store.directory.iterdir() if path.is_file())
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(total - 1 - records))
     default_store().evict()
     left = sorted(path.suffix for path in store.directory.iterdir() if path.is_file())
     assert left == [".json", ".mjb", ".xml"] and kept > 0

@@ -162,6 +162,7 @@ def test_a_bundle_writes_only_plain_names_inside_its_folder(tmp_path: Path) -> N
     assert main(["build", str(robot / "strange.yaml"), "--bundle", str(tmp_path / "bundle")]) == 0
     written = sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*") if p.is_file())
     assert written == [
+        "bundle/.assembler-bundle.json",  # the bundle's record of its own files
         "bundle/Strange.xml",
         "bundle/assets/hidden.obj",
         "bundle/assets/tetra.obj",
@@ -241,4 +242,5 @@ def test_cache_info_says_when_the_cache_cannot_be_used(
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "a-file" / "cache"))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     assert main(["cache", "info"]) == 0
-    assert f"status    unusable: {tmp_path / 'a-file'} is a file, not a folder" in capsys.readouterr().out
+    (status,) = [line for line in capsys.readouterr().out.splitlines() if line.startswith("status ")]
+    assert status.split(None, 1)[1] == f"unusable: {tmp_path / 'a-file'} is a file, not a folder"

@@ -240,19 +240,19 @@ def test_an_undeclared_vendor_package_beside_its_urdf_gets_the_line_that_declare
 
 
 @NEEDS_CONVERTER
-def test_a_cache_folder_that_cannot_be_written_is_one_line_for_a_dae_mesh(
+def test_a_cache_folder_that_cannot_be_written_still_converts_a_dae_mesh(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
+    """A cache folder that cannot be made was a traceback (mkstemp); the converted mesh now goes to this
+    process's own scratch folder, as with the cache off (assembler.cache.content)."""
     lab = _lab(tmp_path, mesh("meshes/arm.dae"), {}, "")
     write_dae(lab / "specs" / "meshes" / "arm.dae")
     (tmp_path / "cache").write_text("")  # a file where the folder should be: mkdir fails, also as root
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.chdir(lab)
-    assert main(["validate", "--compile", "specs/arm.yaml"]) == 1
-    assert capsys.readouterr().err.splitlines() == [
-        f"{HEAD}:3: cannot write the converted mesh to {tmp_path}/cache/converted-meshes (Not a directory); "
-        "make the cache folder writable or point ASSEMBLER_CACHE_DIR at one that is"
-    ]
+    assert main(["validate", "--compile", "specs/arm.yaml"]) == 0
+    assert "Traceback" not in capsys.readouterr().err
+    assert (tmp_path / "cache").read_text() == ""  # the file in the cache folder's place is left alone
 
 
 @NEEDS_CONVERTER

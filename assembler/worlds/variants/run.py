@@ -15,6 +15,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import signal
 import threading
 import time
 from collections.abc import Iterator, Sequence
@@ -117,7 +118,10 @@ def _exit_with_parent(parent: int) -> None:
 
 
 def _start_worker(spec_paths: Sequence[str], parent: int) -> None:
-    """Worker start: follow the parent, and register the user's specs (idempotent when forked)."""
+    """Worker start: follow the parent, leave Ctrl-C to it (the terminal sends it to every process
+    of the run; the parent says ``interrupted`` once, no worker prints a traceback), and register
+    the user's specs (idempotent when forked)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True, name="orphan-guard").start()
     for path in spec_paths:
         register_specs(path)
@@ -127,10 +131,11 @@ def _results(plan: VariantPlan, work: list[Job], workers: int) -> Iterator[Varia
     if workers <= 1:
         yield from map(_build, work)
         return
-    with ProcessPoolExecutor(
-        workers, initializer=_start_worker, initargs=(plan.spec_paths, os.getpid())
-    ) as pool:
+    pool = ProcessPoolExecutor(workers, initializer=_start_worker, initargs=(plan.spec_paths, os.getpid()))
+    try:
         yield from pool.map(_build, work, chunksize=max(1, len(work) // (4 * workers)))
+    finally:  # interrupted: what has not started is dropped; what runs finishes its file whole
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def write_manifest(folder: Path, results: Sequence[VariantResult]) -> None:
