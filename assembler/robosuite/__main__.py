@@ -5,16 +5,20 @@ start-up hook that does it for every script while ``ASSEMBLER_ROBOSUITE_SPECS`` 
     python -m assembler.robosuite train.py --lr 3e-4   # train.py sees the spec robots
     python -m assembler.robosuite --install-hook        # every script, while a variable is set
     python -m assembler.robosuite --remove-hook
+    python -m assembler.robosuite --check               # which of robosuite's statements are patched
+
+A problem with what the variables name is one line each, and the script does not run (exit 1).
 """
 
 from __future__ import annotations
 
+import importlib
 import runpy
 import sys
 import sysconfig
 from pathlib import Path
 
-import assembler.robosuite  # noqa: F401  (registers the spec robots, as the package's __init__ has)
+import assembler.robosuite  # noqa: F401  (registers the spec robots when robosuite loads)
 from assembler.cli.endings import end_cleanly
 from assembler.files.writing import write_atomically
 from assembler.robosuite.hook import PTH_LINE
@@ -44,7 +48,21 @@ def setup(argv: list[str]) -> int:
         hook_path().unlink(missing_ok=True)
         print(f"removed {hook_path()}")
         return 0
-    return -1  # importing this package registered the specs, with the variables' folders and experiment
+    if argv[0] == "--check":
+        return check()
+    bridge = importlib.import_module("assembler.robosuite.bridge")  # imports robosuite: registers now
+    return 1 if bridge.ENVIRONMENT_PROBLEMS else -1  # its problems are printed, one line each
+
+
+def check() -> int:
+    """Print the MuJoCo and robosuite in use and, per patch of robosuite's statements, its state."""
+    bridge = importlib.import_module("assembler.robosuite.bridge")
+    compat = importlib.import_module("assembler.robosuite.compat")
+    robosuite = sys.modules["robosuite"]
+    print(f"MuJoCo {compat.mujoco.__version__}, robosuite {robosuite.__version__}")
+    for line in compat.report():
+        print(line)
+    return 1 if bridge.ENVIRONMENT_PROBLEMS else 0
 
 
 def main(argv: list[str]) -> int:
