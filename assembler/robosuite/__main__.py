@@ -21,7 +21,7 @@ from pathlib import Path
 import assembler.robosuite  # noqa: F401  (registers the spec robots when robosuite loads)
 from assembler.cli.endings import end_cleanly
 from assembler.files.writing import write_atomically
-from assembler.robosuite.hook import PTH_LINE
+from assembler.robosuite import hook
 
 PTH_NAME = "assembler-robosuite.pth"
 
@@ -37,7 +37,7 @@ def setup(argv: list[str]) -> int:
         print(__doc__)
         return 0 if argv else 2
     if argv[0] == "--install-hook":
-        write_atomically(hook_path(), PTH_LINE)
+        write_atomically(hook_path(), hook.pth_line(str(Path(hook.__file__).resolve())))
         print(
             f"wrote {hook_path()}: scripts register spec robots with robosuite while "
             "ASSEMBLER_ROBOSUITE_SPECS "

@@ -11,6 +11,7 @@ and every name in them exists in that assembly.
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, ClassVar, TypeVar
 
 import numpy as np
@@ -20,7 +21,7 @@ from robosuite.models.grippers import GripperModel as RobosuiteGripper
 from robosuite.models.robots.manipulators.manipulator_model import ManipulatorModel as RobosuiteManipulator
 from robosuite.models.robots.robot_model import RobotModelMeta
 
-from assembler.errors import AssemblerError, SpecError
+from assembler.errors import AssemblerError, AssemblerWarning, SpecError
 from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
@@ -32,6 +33,9 @@ from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)
+
+_WITHOUT_INIT_QPOS: set[str] = set()
+"""Robots whose missing ``init_qpos`` was said (once per robot and process)."""
 
 
 class QuietMeta(RobotModelMeta):  # type: ignore[misc]
@@ -98,8 +102,17 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
 
     @property
     def init_qpos(self) -> FloatArray:
-        """The spec's initial joint positions."""
-        return np.array(self.spec.init_qpos, dtype=float)
+        """The spec's initial joint positions; without them, the model file's ``qpos0`` (each joint's
+        ``ref``, zero unless the file says otherwise), said once per robot: robosuite resets to it."""
+        if self.spec.init_qpos is None and self.spec.name not in _WITHOUT_INIT_QPOS:
+            _WITHOUT_INIT_QPOS.add(self.spec.name)
+            warnings.warn(
+                f"{self.assembly.describe()} has no init_qpos: robosuite resets its joints to the model "
+                f"file's qpos0 {list(self.assembly.init_qpos)}; set init_qpos in the spec to choose the pose",
+                AssemblerWarning,
+                stacklevel=2,
+            )
+        return self.assembly.init_qpos
 
     @property
     def init_base_qpos(self) -> FloatArray | None:
