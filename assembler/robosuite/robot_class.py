@@ -158,7 +158,7 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         """Stand our robot on the spec base of ``base``'s name; ``base`` keeps its name lists."""
         if self.base is not None:
             raise ValueError("Mount already added for this robot!")  # robosuite's words
-        self.assembly.add_base(our_part(REGISTERED_BASES, base)(idn=base.idn))
+        self.assembly.add_base(our_instance(REGISTERED_BASES, base))
         self.base = base
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
@@ -168,10 +168,11 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         arms = [arm for arm in self.arms if arm_name is None or self.eef_name[arm] == arm_name]
         if not arms:
             raise ValueError(f"{type(self).__name__} has no end-effector body named {arm_name}")
-        for arm in arms:
+        for index, arm in enumerate(arms):
             if self.eef_name[arm] in self.grippers:
                 raise ValueError("Attempts to add multiple grippers to one body")  # robosuite's words
-            self.assembly.add_gripper(our_part(REGISTERED_GRIPPERS, gripper)(idn=gripper.idn), arm=arm)
+            part = our_instance(REGISTERED_GRIPPERS, gripper, reuse=index == 0)  # one instance per hand
+            self.assembly.add_gripper(part, arm=arm)
             self.grippers[self.eef_name[arm]] = gripper
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
@@ -207,6 +208,16 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = [by_name.get((e.tag, e.get("name")), e) for e in value]
             else:
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
+
+
+def our_instance(registry: Registry[P], robosuite_part: Any, reuse: bool = True) -> P:
+    """Our part for ``robosuite_part`` (a robosuite gripper or base object): when it is one of ours, the
+    very part whose model file robosuite read (its XML is read once; ``reuse``), else a new instance of
+    :func:`our_part`."""
+    own = getattr(robosuite_part, "part", None)
+    if reuse and getattr(type(robosuite_part), "assembler_class", None) is not None and own is not None:
+        return own  # type: ignore[no-any-return]
+    return our_part(registry, robosuite_part)(idn=robosuite_part.idn)
 
 
 def our_part(registry: Registry[P], robosuite_part: Any) -> type[P]:
