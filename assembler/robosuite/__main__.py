@@ -17,13 +17,17 @@ import runpy
 import sys
 import sysconfig
 from pathlib import Path
+from types import ModuleType
 
 import assembler.robosuite  # noqa: F401  (registers the spec robots when robosuite loads)
 from assembler.cli.endings import end_cleanly
+from assembler.errors import AssemblerError
 from assembler.files.writing import write_atomically
 from assembler.robosuite import hook
 
 PTH_NAME = "assembler-robosuite.pth"
+NEEDS_ROBOSUITE = "assembler.robosuite needs robosuite"
+"""How the bridge's ImportError starts when robosuite is not installed."""
 
 
 def hook_path() -> Path:
@@ -50,19 +54,29 @@ def setup(argv: list[str]) -> int:
         return 0
     if argv[0] == "--check":
         return check()
-    bridge = importlib.import_module("assembler.robosuite.bridge")  # imports robosuite: registers now
+    bridge = _bridge()  # imports robosuite: registers now
     return 1 if bridge.ENVIRONMENT_PROBLEMS else -1  # its problems are printed, one line each
 
 
 def check() -> int:
     """Print the MuJoCo and robosuite in use and, per patch of robosuite's statements, its state."""
-    bridge = importlib.import_module("assembler.robosuite.bridge")
+    bridge = _bridge()
     compat = importlib.import_module("assembler.robosuite.compat")
     robosuite = sys.modules["robosuite"]
     print(f"MuJoCo {compat.mujoco.__version__}, robosuite {robosuite.__version__}")
     for line in compat.report():
         print(line)
     return 1 if bridge.ENVIRONMENT_PROBLEMS else 0
+
+
+def _bridge() -> ModuleType:
+    """The bridge, imported (robosuite with it); without robosuite, one line says what to install."""
+    try:
+        return importlib.import_module("assembler.robosuite.bridge")
+    except ImportError as error:
+        if not str(error).startswith(NEEDS_ROBOSUITE):
+            raise
+        raise AssemblerError(str(error)) from None
 
 
 def main(argv: list[str]) -> int:

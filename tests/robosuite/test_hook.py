@@ -95,3 +95,27 @@ def test_robosuite_still_imports_where_the_hook_outlived_the_package_and_it_says
         f"assembler.robosuite: the start-up hook {installed} runs, but the package is not installed here; "
         "remove the hook's .pth file or reinstall robot-assembler"
     ]
+
+
+def test_python_m_without_robosuite_says_what_to_install_in_one_line(tmp_path: Path) -> None:
+    python, _ = _scratch_venv(tmp_path)
+    packages = tmp_path / "packages"  # this interpreter's packages but robosuite, linked
+    packages.mkdir()
+    for entry in Path(sysconfig.get_paths()["purelib"]).iterdir():
+        if not entry.name.startswith("robosuite") and entry.suffix != ".pth":
+            os.symlink(entry, packages / entry.name)
+    checkout = Path(hook.__file__).resolve().parents[2]
+    done = _run(
+        python,
+        "import runpy; runpy.run_module('assembler.robosuite', run_name='__main__')",
+        PYTHONPATH=f"{checkout}{os.pathsep}{packages}",
+    )
+    assert done.returncode == 2 and "Traceback" not in done.stderr  # no argument: the usage, as before
+    for argv in (["--check"], ["train.py"]):
+        code = f"import sys, runpy; sys.argv = ['x', *{argv!r}]; runpy.run_module('assembler.robosuite', run_name='__main__')"
+        done = _run(python, code, PYTHONPATH=f"{checkout}{os.pathsep}{packages}")
+        assert done.returncode == 1, done.stderr[-2000:]
+        assert done.stderr.splitlines() == [
+            "assembler.robosuite needs robosuite (No module named 'robosuite'); "
+            "install it with: pip install -e '.[robosuite]'"
+        ]
