@@ -93,6 +93,7 @@ class Patch:
 
     @property
     def where(self) -> str:
+        """The method's dotted name."""
         return f"{self.module}.{self.owner}.{self.method}"
 
 
@@ -134,7 +135,12 @@ class RobosuiteChanged(Exception):
 
 
 def _method(patch: Patch) -> FunctionType:
-    owner = getattr(importlib.import_module(patch.module), patch.owner, None)
+    """robosuite's method the patch rewrites (:class:`RobosuiteChanged` where robosuite has none)."""
+    try:
+        module = importlib.import_module(patch.module)
+    except ImportError:
+        raise RobosuiteChanged(f"robosuite has no module {patch.module}") from None
+    owner = getattr(module, patch.owner, None)
     method = getattr(owner, patch.method, None)
     if not isinstance(method, FunctionType):
         raise RobosuiteChanged(f"robosuite has no {patch.where}")
