@@ -41,7 +41,7 @@ def _own_specs(clone: Path) -> list[Path]:
 
 ROBOSUITE_MISSING = (
     "    because: Python package 'robosuite' is not installed; install it with pip install "
-    'robosuite==1.5.2 mujoco==3.9.0 (the robosuite extra; in a clone: pip install ".[robosuite]")'
+    'robosuite==1.5.2 (the robosuite extra; in a clone: pip install ".[robosuite]")'
 )
 
 BLOCKY_MJCF = """\

@@ -28,8 +28,8 @@ def extra_requirements(extra: str) -> list[str]:
 
 
 def install_command(extra: str) -> str:
-    """How to install one of our extras, e.g. ``pip install robosuite==1.5.2 mujoco==3.9.0 (the
-    robosuite extra; in a clone: pip install ".[robosuite]")``."""
+    """How to install one of our extras, e.g. ``pip install robosuite==1.5.2 (the robosuite extra; in a
+    clone: pip install ".[robosuite]")``."""
     requirements = sorted(extra_requirements(extra), key=lambda r: not r.startswith(extra)) or [extra]
     clone = f'pip install ".[{extra}]"'
     return f"pip install {' '.join(requirements)} (the {extra} extra; in a clone: {clone})"

@@ -2,7 +2,7 @@
 
 robosuite's arm controllers (OSC, joint torque, IK) write torques into ``ctrl``. A robot whose MJCF
 drives its arms with position servos says what robosuite should do with them
-(``robosuite.arm_actuation``): ``torque`` turns each servo into a motor whose control range is the
+(``robosuite.actuation``): ``torque`` turns each servo into a motor whose control range is the
 servo's force range; ``as_is`` keeps them. Never guessed: a robot with arm servos that says neither
 is an error that names them.
 """
@@ -13,13 +13,12 @@ from collections.abc import Collection
 
 import mujoco
 
-AFFINE = mujoco.mjtBias.mjBIAS_AFFINE
-FIXED = mujoco.mjtGain.mjGAIN_FIXED
+from assembler.robosuite.conventions import is_servo, limits_force
 
 
 def is_position_servo(actuator: mujoco.MjsActuator) -> bool:
-    """A servo towards a position target: fixed gain, bias -kp * length (MuJoCo's <position>)."""
-    return bool(actuator.gaintype == FIXED and actuator.biastype == AFFINE and actuator.biasprm[1] < 0)
+    """An actuator of a spec that is a position servo (:func:`~assembler.robosuite.conventions.is_servo`)."""
+    return is_servo(int(actuator.gaintype), int(actuator.biastype), float(actuator.biasprm[1]))
 
 
 def position_servos(mjspec: mujoco.MjSpec, names: Collection[str]) -> list[mujoco.MjsActuator]:
@@ -28,9 +27,10 @@ def position_servos(mjspec: mujoco.MjSpec, names: Collection[str]) -> list[mujoc
 
 
 def has_force_range(actuator: mujoco.MjsActuator) -> bool:
-    """Whether the servo says how much force it may use (the motor's range to be)."""
-    low, high = (float(value) for value in actuator.forcerange)
-    return actuator.forcelimited != mujoco.mjtLimited.mjLIMITED_FALSE and low < high
+    """Whether the servo of a spec says how much force it may use (the motor's range to be); "auto"
+    limits it where a range is given, as the compiler's autolimits do."""
+    limited = actuator.forcelimited != mujoco.mjtLimited.mjLIMITED_FALSE
+    return limits_force(limited, actuator.forcerange)
 
 
 def motorize(servos: Collection[mujoco.MjsActuator]) -> None:

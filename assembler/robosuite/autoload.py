@@ -15,9 +15,10 @@ from __future__ import annotations
 
 import os
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 
-from assembler.errors import AssemblerWarning, RegistryError
+from assembler.errors import AssemblerError, AssemblerWarning, RegistryError
 from assembler.models import ManipulatorModel, PartModel
 from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import register_specs, with_overrides
@@ -75,12 +76,20 @@ def register_experiment(path: str | Path) -> list[str]:
 
 
 def register_from_environment() -> list[str]:
-    """Register what ``ASSEMBLER_ROBOSUITE_SPECS`` and ``ASSEMBLER_ROBOSUITE_EXPERIMENT`` name."""
-    names: list[str] = []
+    """Register what ``ASSEMBLER_ROBOSUITE_SPECS`` and ``ASSEMBLER_ROBOSUITE_EXPERIMENT`` name. Each
+    variable's specs enter all or none; a problem is not raised (robosuite is being imported, and its
+    import must not fail because of a variable) but returned, one line per problem, naming the variable."""
+    said: list[str] = []
     folders = [folder for folder in os.environ.get(SPECS_VARIABLE, "").split(os.pathsep) if folder]
-    if folders:
-        names += register(*folders)
     experiment = os.environ.get(EXPERIMENT_VARIABLE)
+    steps: list[tuple[str, Callable[[], list[str]]]] = []
+    if folders:
+        steps.append((SPECS_VARIABLE, lambda: register(*folders)))
     if experiment:
-        names += register_experiment(experiment)
-    return names
+        steps.append((EXPERIMENT_VARIABLE, lambda: register_experiment(experiment)))
+    for variable, step in steps:
+        try:
+            step()
+        except AssemblerError as error:
+            said += [f"{problem} ({variable}: nothing of it was registered)" for problem in error.problems]
+    return said

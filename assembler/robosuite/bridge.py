@@ -1,6 +1,7 @@
 """The bridge itself: imports robosuite, then registers our specs with it (see :mod:`assembler.robosuite`).
 
-Importing this module imports robosuite, then registers each shipped spec whose name robosuite does
+Importing this module imports robosuite, patches the statements of robosuite this MuJoCo cannot run
+(:mod:`.compat`), then registers each shipped spec whose name robosuite does
 not use itself, then the spec folders and experiment file named by ``ASSEMBLER_ROBOSUITE_SPECS``
 and ``ASSEMBLER_ROBOSUITE_EXPERIMENT``. Our specs of robosuite's own robots, grippers and bases
 enter only when asked: ``replace_robosuite()`` (robosuite's test plugin does this). What reaches the
@@ -9,6 +10,8 @@ simulator is our assembly, emitted so that robosuite's XML layer reads it withou
 """
 
 from __future__ import annotations
+
+import sys
 
 try:
     import robosuite  # noqa: F401  (robosuite's registries must exist before we write to them)
@@ -20,6 +23,7 @@ except ImportError as error:  # pragma: no cover - depends on the installation
 import assembler.registry.catalog  # noqa: F401  (registers the shipped specs on first import)
 from assembler.errors import Problem, RegistryError, did_you_mean
 from assembler.models import REGISTRIES, PartModel
+from assembler.robosuite import compat
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.registries import TABLES, install, installed, offered, replaced, robosuite_has
@@ -77,6 +81,11 @@ def registered() -> dict[str, list[str]]:
     return {family: installed(family) for family in ("robot", "gripper", "base")}
 
 
+compat.apply_all()  # before anything of robosuite runs: robosuite's statements newer MuJoCo breaks
 CONFIGS.install()
 install(_shipped())
-register_from_environment()
+ENVIRONMENT_PROBLEMS: list[str] = register_from_environment()
+"""What ``ASSEMBLER_ROBOSUITE_SPECS``/``_EXPERIMENT`` named that could not be registered, one line each
+(printed here; ``python -m assembler.robosuite`` stops on them)."""
+for _line in ENVIRONMENT_PROBLEMS:
+    print(_line, file=sys.stderr)

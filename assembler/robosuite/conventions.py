@@ -8,6 +8,8 @@ so lint and bridge cannot disagree.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import mujoco
 
 from assembler.models import REGISTERED_BASES, ManipulatorModel
@@ -59,6 +61,18 @@ AFFINE = int(mujoco.mjtBias.mjBIAS_AFFINE)
 FIXED = int(mujoco.mjtGain.mjGAIN_FIXED)
 
 
+def is_servo(gaintype: int, biastype: int, bias_position: float) -> bool:
+    """A servo towards a position target (MuJoCo's ``<position>``): fixed gain, bias -kp times the length."""
+    return int(gaintype) == FIXED and int(biastype) == AFFINE and bias_position < 0
+
+
+def limits_force(limited: bool, forcerange: Sequence[float]) -> bool:
+    """Whether an actuator limits its force to a non-empty range (the range its motor would take as
+    ctrlrange)."""
+    low, high = (float(value) for value in forcerange)
+    return limited and low < high
+
+
 def base_in_robosuite(spec: RobotSpec) -> str:
     """The base a spec robot stands on in robosuite: its default base, else its stand-in (declared, or
     by morphology: see ``RobosuiteOptions.stand_in_base``)."""
@@ -90,18 +104,14 @@ def driven_actuators(robot: ManipulatorModel) -> list[str]:
 
 
 def is_bridge_servo(model: mujoco.MjModel, actuator: int) -> bool:
-    """A position servo as the bridge reads one: fixed gain and a bias of -kp times the length."""
-    return bool(
-        model.actuator_gaintype[actuator] == FIXED
-        and model.actuator_biastype[actuator] == AFFINE
-        and model.actuator_biasprm[actuator, 1] < 0
-    )
+    """A compiled actuator the bridge reads as a position servo (:func:`is_servo`)."""
+    kind = (model.actuator_gaintype[actuator], model.actuator_biastype[actuator])
+    return is_servo(*kind, float(model.actuator_biasprm[actuator, 1]))
 
 
 def has_force_range(model: mujoco.MjModel, actuator: int) -> bool:
-    """Whether the actuator limits its force (the range its motor would take as ctrlrange)."""
-    low, high = (float(value) for value in model.actuator_forcerange[actuator])
-    return bool(model.actuator_forcelimited[actuator]) and low < high
+    """Whether a compiled actuator limits its force (:func:`limits_force`)."""
+    return limits_force(bool(model.actuator_forcelimited[actuator]), model.actuator_forcerange[actuator])
 
 
 def arm_center_site(arm: str) -> str:

@@ -11,6 +11,7 @@ and every name in them exists in that assembly.
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, ClassVar, TypeVar
 
 import numpy as np
@@ -20,7 +21,7 @@ from robosuite.models.grippers import GripperModel as RobosuiteGripper
 from robosuite.models.robots.manipulators.manipulator_model import ManipulatorModel as RobosuiteManipulator
 from robosuite.models.robots.robot_model import RobotModelMeta
 
-from assembler.errors import AssemblerError, SpecError
+from assembler.errors import AssemblerError, AssemblerWarning, SpecError
 from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
@@ -32,6 +33,9 @@ from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)
+
+_WITHOUT_INIT_QPOS: set[str] = set()
+"""Robots whose missing ``init_qpos`` was said (once per robot and process)."""
 
 
 class QuietMeta(RobotModelMeta):  # type: ignore[misc]
@@ -98,8 +102,17 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
 
     @property
     def init_qpos(self) -> FloatArray:
-        """The spec's initial joint positions."""
-        return np.array(self.spec.init_qpos, dtype=float)
+        """The spec's initial joint positions; without them, the model file's ``qpos0`` (each joint's
+        ``ref``, zero unless the file says otherwise), said once per robot: robosuite resets to it."""
+        if self.spec.init_qpos is None and self.spec.name not in _WITHOUT_INIT_QPOS:
+            _WITHOUT_INIT_QPOS.add(self.spec.name)
+            warnings.warn(
+                f"{self.assembly.describe()} has no init_qpos: robosuite resets its joints to the model "
+                f"file's qpos0 {list(self.assembly.init_qpos)}; set init_qpos in the spec to choose the pose",
+                AssemblerWarning,
+                stacklevel=2,
+            )
+        return self.assembly.init_qpos
 
     @property
     def init_base_qpos(self) -> FloatArray | None:
@@ -145,7 +158,7 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         """Stand our robot on the spec base of ``base``'s name; ``base`` keeps its name lists."""
         if self.base is not None:
             raise ValueError("Mount already added for this robot!")  # robosuite's words
-        self.assembly.add_base(our_part(REGISTERED_BASES, base)(idn=base.idn))
+        self.assembly.add_base(our_instance(REGISTERED_BASES, base))
         self.base = base
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
@@ -155,10 +168,11 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         arms = [arm for arm in self.arms if arm_name is None or self.eef_name[arm] == arm_name]
         if not arms:
             raise ValueError(f"{type(self).__name__} has no end-effector body named {arm_name}")
-        for arm in arms:
+        for index, arm in enumerate(arms):
             if self.eef_name[arm] in self.grippers:
                 raise ValueError("Attempts to add multiple grippers to one body")  # robosuite's words
-            self.assembly.add_gripper(our_part(REGISTERED_GRIPPERS, gripper)(idn=gripper.idn), arm=arm)
+            part = our_instance(REGISTERED_GRIPPERS, gripper, reuse=index == 0)  # one instance per hand
+            self.assembly.add_gripper(part, arm=arm)
             self.grippers[self.eef_name[arm]] = gripper
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
@@ -194,6 +208,16 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = [by_name.get((e.tag, e.get("name")), e) for e in value]
             else:
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
+
+
+def our_instance(registry: Registry[P], robosuite_part: Any, reuse: bool = True) -> P:
+    """Our part for ``robosuite_part`` (a robosuite gripper or base object): when it is one of ours, the
+    very part whose model file robosuite read (its XML is read once; ``reuse``), else a new instance of
+    :func:`our_part`."""
+    own = getattr(robosuite_part, "part", None)
+    if reuse and getattr(type(robosuite_part), "assembler_class", None) is not None and own is not None:
+        return own  # type: ignore[no-any-return]
+    return our_part(registry, robosuite_part)(idn=robosuite_part.idn)
 
 
 def our_part(registry: Registry[P], robosuite_part: Any) -> type[P]:

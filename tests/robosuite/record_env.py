@@ -19,6 +19,9 @@ def record(side: str, env_name: str, robots: list[str], steps: int, out: str) ->
     """Make the environment (robosuite's robots, or our specs of them), step it and write the record."""
     import robosuite
 
+    from assembler.robosuite import compat
+
+    compat.apply_all()  # what this MuJoCo needs patched in robosuite (nothing on 3.9): both sides alike
     if side == "specs":
         import assembler.robosuite
 

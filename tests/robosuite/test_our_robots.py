@@ -145,3 +145,15 @@ def test_sparrow7_with_its_gripper_lifts_the_cube_in_lift_with_osc_pose() -> Non
         assert env._check_success(), "Lift's own success check says the cube is not lifted"
     finally:
         env.close()
+
+
+def test_the_gripper_and_base_robosuite_read_are_the_parts_our_assembly_holds() -> None:
+    env = _make("Lift", "Sparrow7")
+    try:
+        robot = env.robots[0]
+        model = robot.robot_model
+        gripper = robot.gripper["right"]
+        assert model.assembly.grippers["right"] is gripper.part  # its model file read once, for both
+        assert model.assembly.base is model.base.part
+    finally:
+        env.close()

@@ -8,12 +8,9 @@ is mocked: robosuite is imported, its tables are read after our import, environm
 from __future__ import annotations
 
 import json
-import os
-import shutil
 import subprocess
 import sys
 import sysconfig
-import textwrap
 from pathlib import Path
 from typing import Any
 
@@ -23,10 +20,9 @@ from assembler.urdf.packages import package_folders
 
 pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
 
-ROOT = Path(__file__).resolve().parents[2]
-VARIABLES = ("ASSEMBLER_ROBOSUITE_SPECS", "ASSEMBLER_ROBOSUITE_EXPERIMENT")
-RESULT = "RESULT "
-
+from tests.robosuite.processes import result as _result  # noqa: E402
+from tests.robosuite.processes import run as _run  # noqa: E402
+from tests.robosuite.processes import user_folder as _user_folder  # noqa: E402
 
 URDF = bool(package_folders("example-robot-data"))
 
@@ -48,46 +44,6 @@ BASES = {
     "SiteOnlyBase": "NullBaseModel",
 }
 BASES |= {"Go2": "LegBaseModel"} if URDF else {}
-
-
-def _environment(**variables: str) -> dict[str, str]:
-    environment = {key: value for key, value in os.environ.items() if key not in VARIABLES}
-    paths = [str(ROOT), *filter(None, environment.get("PYTHONPATH", "").split(os.pathsep))]
-    return {**environment, "PYTHONPATH": os.pathsep.join(paths), "MUJOCO_GL": "egl", **variables}
-
-
-def _run(
-    args: list[str], cwd: Path, python: str = sys.executable, **variables: str
-) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [python, *args], cwd=cwd, env=_environment(**variables), capture_output=True, text=True, check=False
-    )
-
-
-def _result(code: str, cwd: Path, **variables: str) -> Any:
-    """What the script prints as ``RESULT <json>`` (it fails the test if the script fails)."""
-    done = _run(["-c", textwrap.dedent(code)], cwd, **variables)
-    assert done.returncode == 0, done.stderr[-3000:]
-    (line,) = [line for line in done.stdout.splitlines() if line.startswith(RESULT)]
-    return json.loads(line[len(RESULT) :])
-
-
-def _user_folder(root: Path, *names: str) -> Path:
-    """A user's spec folder ``root/my_robots``: Sparrow7's spec copied under each name, its model file
-    copied into the folder (a spec reads files in its own folder) and ``mjcf:`` pointed at it."""
-    folder = root / "my_robots"
-    folder.mkdir(exist_ok=True)
-    shutil.copytree(ROOT / "assets" / "sparrow7", folder / "assets", dirs_exist_ok=True)
-    text = (ROOT / "specs" / "sparrow7.yaml").read_text()
-    for old, new in (
-        ("\nname: Sparrow7\n", "\nname: NAME\n"),
-        ("\nmjcf: ../assets/sparrow7/", "\nmjcf: assets/"),
-    ):
-        assert old in text
-        text = text.replace(old, new)
-    for name in names:
-        (folder / f"{name.lower()}.yaml").write_text(text.replace("\nname: NAME\n", f"\nname: {name}\n"))
-    return folder
 
 
 # ----- the shipped specs, on import --------------------------------------------------------------
