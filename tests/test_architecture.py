@@ -50,9 +50,12 @@ def _deferred_imports(tree: ast.AST) -> list[tuple[ast.AST, str]]:
 
 
 def _graph() -> dict[str, set[str]]:
+    """Who imports whom; an import made late on purpose (DEFERRED) runs after both modules loaded, so
+    it closes no cycle at import time."""
     graph: dict[str, set[str]] = {}
     for name, path in MODULES.items():
-        targets = {_owner(target) for _, target in _imports(ast.parse(path.read_text()))}
+        imported = _imports(ast.parse(path.read_text()))
+        targets = {_owner(target) for _, target in imported if (name, target) not in DEFERRED}
         graph[name] = {t for t in targets if t is not None and t != name}
     return graph
 
@@ -102,6 +105,18 @@ DEFERRED = {
     ("assembler.cli", "assembler.cli.quick_build"): "a cached build is answered before the commands load",
     ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
     ("assembler.cli", "assembler.cache.settings"): "it imports MuJoCo: loaded inside the command's ending",
+    (
+        "assembler.robosuite.hook",
+        "assembler.robosuite",
+    ): "the start-up hook imports the bridge once robosuite loads",
+    (
+        "assembler.robosuite.__main__",
+        "assembler.robosuite.compat",
+    ): "after robosuite is found (else one line)",
+    (
+        "assembler.robosuite.__main__",
+        "assembler.robosuite.bridge",
+    ): "after robosuite is found (else one line)",
     ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
     ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
     ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",

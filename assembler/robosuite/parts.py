@@ -19,6 +19,7 @@ import mujoco
 from assembler.errors import AssemblerWarning, SpecError
 from assembler.mjcf.inertia_groups import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
+from assembler.models.collision_colour import colour_collision_geoms
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.arm_centers import add_arm_centers
 from assembler.robosuite.conventions import DRIVEN_GROUPS, driven_actuators, robot_type_name
@@ -47,6 +48,10 @@ def robosuite_variant(cls: type[P]) -> type[P]:
 
         def part_mjspec(self: PartModel) -> mujoco.MjSpec:
             mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
+            if self.spec.collision_colour != "robosuite":
+                # robosuite's XML layer colours every collision geom itself when it reads a part: given
+                # that colour here, what robosuite reads is what we give (docs/robosuite.md)
+                colour_collision_geoms(mjspec, self.collision_rgba)
             if isinstance(self, ManipulatorModel):
                 drive_as_declared(self, mjspec)
                 add_arm_centers(self, mjspec)

@@ -23,6 +23,11 @@ BRIDGE = Path(__file__).parents[2] / "assembler" / "robosuite"
 
 NOT_ABOUT_A_SPEC: dict[tuple[str, str], str] = {
     ("__init__.py", "has no attribute"): "a Python attribute lookup on the package",
+    (
+        "__main__.py",
+        "AssemblerError(str(error))",
+    ): "python -m assembler.robosuite where robosuite cannot load",
+    ("compat.py", "RobosuiteChanged("): "robosuite's own code changed: the patch is skipped with one line",
     ("autoload.py", "RegistryError("): "the autoload environment variable names folders that do not load",
     ("bridge.py", "ImportError("): "robosuite is not installed",
     ("bridge.py", "_why_not_replaced"): "replace_robosuite() called with names that are not robosuite's",
