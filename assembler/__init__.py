@@ -6,7 +6,8 @@
 
 ``import assembler`` is light: each part of the API (and the shipped specs, registered when the
 registry is first used) is imported on first use, so a command that only needs the command line or
-the compiled-model cache never pays for the schema classes or for reading every spec.
+the compiled-model cache never pays for the schema classes or for reading every spec; nor does
+``assemble(name).get_model()`` of a robot asked for before (see :mod:`assembler.registry.deferred`).
 """
 
 from __future__ import annotations
@@ -55,10 +56,12 @@ if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imp
     from assembler.worlds.variants import VariantPlan, write_variants
 
 _LAZY: dict[str, str] = {
-    "assemble": "assembler.registry.instances",
+    # assemble and create_robot answer a robot asked for before from the cache, reading no spec
+    # (assembler.registry.deferred); type checkers see the registry's own (a deferred robot is one).
+    "assemble": "assembler.registry.deferred",
     "create_base": "assembler.registry.instances",
     "create_gripper": "assembler.registry.instances",
-    "create_robot": "assembler.registry.instances",
+    "create_robot": "assembler.registry.deferred",
     "add_spec_folders": "assembler.registry.catalog",
     "class_from_spec": "assembler.registry.catalog",
     "load_shipped_specs": "assembler.registry.catalog",

@@ -46,12 +46,19 @@ class Figure:
     note: str = ""
     """Anything a reader needs to read the figure right."""
 
+    unit: str = "s"
+    """What ``ours`` and ``reference`` count: seconds, or ``instructions`` (valgrind's callgrind)."""
+
+    def amount(self, value: float) -> str:
+        """``value`` in this figure's unit, as a reader reads it."""
+        return seconds_text(value) if self.unit == "s" else f"{value / 1e9:.3f} G {self.unit}"
+
     def line(self) -> str:
         """The figure as one printed line."""
         verdict = "" if self.met is None else ("met" if self.met else "MISSED")
         return (
-            f"{self.measure:<13} {self.subject:<20} ours {seconds_text(self.ours):>9}  "
-            f"{self.reference_name} {seconds_text(self.reference):>9}  {self.ratio:6.2f}x  "
+            f"{self.measure:<13} {self.subject:<20} ours {self.amount(self.ours):>9}  "
+            f"{self.reference_name} {self.amount(self.reference):>9}  {self.ratio:6.2f}x  "
             f"{('target ' + self.target) if self.target else '':<16} {verdict} {self.note}".rstrip()
         )
 
@@ -68,12 +75,13 @@ def ratio_figure(
     reference: float,
     at_most: float | None = None,
     note: str = "",
+    unit: str = "s",
 ) -> Figure:
     """ours / reference, met when at most ``at_most``."""
     ratio = ours / reference if reference > 0 else float("nan")
     met = None if at_most is None else bool(ratio <= at_most)
     target = "" if at_most is None else f"<= {at_most:g}x"
-    return Figure(measure, subject, ours, reference_name, reference, ratio, target, met, note)
+    return Figure(measure, subject, ours, reference_name, reference, ratio, target, met, note, unit)
 
 
 def speedup_figure(

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from benchmarks.figures import Figure
+from benchmarks.processes import compile_bytecode
 from benchmarks.report import machine, markdown, write_json
 
 HERE = Path(__file__).resolve().parent
@@ -43,6 +44,7 @@ def _arguments(argv: list[str] | None) -> argparse.Namespace:
 
 def main(argv: list[str] | None = None) -> int:
     args = _arguments(argv)
+    compile_bytecode()
     with tempfile.TemporaryDirectory(prefix="assembler-bench-") as scratch:
         os.environ["ASSEMBLER_CACHE_DIR"] = str(Path(scratch) / "cache")  # never the user's cache
         os.environ.pop("ASSEMBLER_NO_CACHE", None)
@@ -57,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[Figure], list[str]]:
-    from benchmarks import environments, fresh, in_process, variants, whole
+    from benchmarks import environments, fresh, in_process, instructions, variants, whole
     from benchmarks.references import own_robots, robosuite_installed, robosuite_robots
     from tests.parity.robosuite_side import robosuite_xml
 
@@ -73,6 +75,8 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
         chosen = set(args.robots.split(","))
         robosuite, own = [n for n in robosuite if n in chosen], [n for n in own if n in chosen]
     notes = [] if robosuite_installed() else ["robosuite is not installed: no robosuite comparisons"]
+    if os.environ.get("PYTHONDONTWRITEBYTECODE"):
+        notes.append("PYTHONDONTWRITEBYTECODE is set: the repository's bytecode was compiled before the run")
     figures: list[Figure] = []
     skipped: list[dict[str, str]] = []
 
@@ -112,6 +116,9 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
     for name in own:
         guarded(name, lambda name=name: whole.warm(name, scratch, repeats, False))
     xml_robots = [n for n in robosuite if n in XML_ROBOTS] or own[:1]
+    if not quick and xml_robots and instructions.available():  # the warm figures, load-independent
+        counted = xml_robots[0]
+        guarded(counted, lambda: instructions.warm(counted, whole.warm_cache(counted, scratch)))
     for name in xml_robots:
         guarded(name, lambda name=name: xml_figures(name))
     if robosuite:

@@ -98,24 +98,40 @@ def uncached(name: str, xml_file: Path, scratch: Path, repeats: int) -> list[Fig
     ]
 
 
+def warm_cache(name: str, scratch: Path) -> dict[str, str]:
+    """The environment of a cache that holds ``name`` (made by :func:`warm`)."""
+    return {"ASSEMBLER_CACHE_DIR": str(scratch / f"w-{name}")}
+
+
+def entry_path(name: str, env: dict[str, str]) -> str:
+    """The ``.mjb`` file of the cache entry that holds ``name`` in the cache ``env`` names."""
+    return str(
+        run_python(
+            "import assembler\nfrom assembler.build.service import default_store\n"
+            "from assembler.cache.key import cache_key\nfrom assembler.registry import instances",
+            f"s = default_store(); e = s.entry(cache_key(instances.assemble({name!r}).build_inputs()))\n"
+            'out["path"] = str(s.directory / e.model)',
+            env,
+        ).inner["path"]
+    )
+
+
 def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure]:
     """Target 2: a new process loading a cached robot, against the ``.mjb`` floor; and how much
     faster than robosuite's cold load that is (no target: it follows from the floor)."""
-    env = _cache(scratch / f"w-{name}")
-    run_python("import assembler", f"assembler.load_model({name!r})", env)  # compiles, records, stores
-    entry = run_python(
-        "import assembler\nfrom assembler.build.service import default_store\n"
-        "from assembler.cache.key import cache_key",
-        f"s = default_store(); e = s.entry(cache_key(assembler.assemble({name!r}).build_inputs()))\n"
-        'out["path"] = str(s.directory / e.model)',
-        env,
-    ).inner["path"]
+    env = _cache(Path(warm_cache(name, scratch)["ASSEMBLER_CACHE_DIR"]))
+    # compiles, records the request, stores the model and its XML
+    run_python("import assembler", f"r = assembler.assemble({name!r}); r.get_model(); r.get_xml()", env)
+    entry = entry_path(name, env)
+    out = str(scratch / f"{name}-saved.xml")
     cases: dict[str, Callable[[int], Run]] = {
         "floor": lambda i: run_python("import mujoco", f"mujoco.MjModel.from_binary_path({entry!r})", env),
         "load_model": lambda i: run_python("import assembler", f"assembler.load_model({name!r})", env),
         "get_model": lambda i: run_python(
             "import assembler", f"assembler.assemble({name!r}).get_model()", env
         ),
+        "get_xml": lambda i: run_python("import assembler", f"assembler.assemble({name!r}).get_xml()", env),
+        "save": lambda i: run_python("import assembler", f"assembler.assemble({name!r}).save({out!r})", env),
     }
     if robosuite:
         cases["robosuite"] = lambda i: run_python(
@@ -148,6 +164,18 @@ def warm(name: str, scratch: Path, repeats: int, robosuite: bool) -> list[Figure
             WARM_FLOOR_TARGET,
             note(results["get_model"]),
         ),
+    ]
+    figures += [
+        ratio_figure(
+            "2 warm",
+            f"{name} assemble().{call}",
+            results[case].wall,
+            floor_name,
+            floor.wall,
+            WARM_FLOOR_TARGET,
+            note(results[case]),
+        )
+        for case, call in (("get_xml", "get_xml()"), ("save", "save(file)"))
     ]
     if robosuite:
         speedup = results["robosuite"].wall / results["load_model"].wall

@@ -102,10 +102,16 @@ DEFERRED = {
     ("assembler.cli", "assembler.cli.quick_build"): "a cached build is answered before the commands load",
     ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
     ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
+    ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
+    ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",
     (
         "assembler.robosuite",
         "assembler.robosuite.bridge",
     ): "the bridge imports robosuite, when robosuite loads",
+    (
+        "assembler.tools.lint.robosuite_bridge",
+        "assembler.robosuite.controllers",
+    ): "lint reads robosuite's controller configurations (importing robosuite) only for a spec naming one",
 }
 """The imports made late on purpose, each with why; any other import must be at the module's top."""
 

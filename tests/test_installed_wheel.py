@@ -157,7 +157,7 @@ def test_the_wheel_is_what_runs_not_the_source_tree(installed: Installed) -> Non
 
 def test_list_and_build_work_outside_any_checkout(installed: Installed) -> None:
     rows = [line.split() for line in installed.ok(installed.scratch, "assembler", "list")[1:]]
-    assert ["Sparrow7", "manipulator", "7", "specs/sparrow7.yaml"] in rows
+    assert ["Sparrow7", "manipulator", "7", "specs/sparrow7.yaml", "(shipped)"] in rows
     assert [row[0] for row in rows] == sorted((row[0] for row in rows), key=str.casefold)
     build = ("assembler", "build", "Sparrow7", "-o", "sparrow7.xml")
     assert installed.ok(installed.scratch, *build, err="wrote sparrow7.xml\n") == []
@@ -189,7 +189,7 @@ def test_validate_specs_compile_in_the_clone_counts_what_it_compiled(
 
 def test_list_in_the_clone_shows_short_paths(installed: Installed, clone: Path) -> None:
     rows = [line.split() for line in installed.ok(clone, "assembler", "list", "bases")[1:]]
-    assert ["Pedestal", "mount", "0", "specs/bases/pedestal.yaml"] in rows
+    assert ["Pedestal", "mount", "0", "specs/bases/pedestal.yaml", "(shipped)"] in rows
 
 
 def test_the_spec_format_example_saved_under_specs_validates_and_builds(

@@ -27,10 +27,33 @@ ROBOSUITE_IMPORT = "import assembler.robosuite"
 robosuite's tables for the whole process)."""
 
 
+ENGINE_IMPORTS = {"from assembler.warp import": "mujoco_warp", "from assembler.mjlab import": "mjlab"}
+"""Examples with one of these lines need that engine (an extra): they run, each in a process of its
+own, where the engine is installed (CI's warp and mjlab stages)."""
+
+
+def _needs_an_engine(example: str) -> bool:
+    return any(line in example for line in ENGINE_IMPORTS)
+
+
 def test_readme_python_examples_run() -> None:
     for example in _blocks("python"):
-        if ROBOSUITE_IMPORT not in example:
+        if ROBOSUITE_IMPORT not in example and not _needs_an_engine(example):
             exec(compile(example, "README.md", "exec"), {})
+
+
+@pytest.mark.parametrize(("line", "engine"), sorted(ENGINE_IMPORTS.items()))
+def test_readme_engine_examples_print_what_they_say(line: str, engine: str, tmp_path: Path) -> None:
+    pytest.importorskip(engine, reason=f"needs {engine}: pip install -e '.[warp]' or '.[mjlab]'")
+    examples = [block for block in _blocks("python") if line in block]
+    assert examples, f"the README has no example with '{line}'"
+    for example in examples:
+        run = subprocess.run(
+            [sys.executable, "-c", example], cwd=tmp_path, capture_output=True, text=True, timeout=1800
+        )
+        assert run.returncode == 0, run.stderr[-3000:]
+        printed = run.stdout.splitlines()[-1]
+        assert "print(" in example and f"# {printed}" in example  # what the README says it prints
 
 
 def test_readme_robosuite_example_runs_a_spec_robot_in_robosuites_lift(tmp_path: Path) -> None:

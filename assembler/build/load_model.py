@@ -16,9 +16,8 @@ from typing import Any
 
 import mujoco
 
-from assembler.build.repeat import answered_model, keyed
+from assembler.build.repeat import KeyedRequest, answered_model, keyed
 from assembler.registry.arguments import DEFAULT, spec_file_path
-
 
 
 def _plain(overrides: Any) -> Any:
@@ -29,6 +28,33 @@ def _plain(overrides: Any) -> Any:
     if isinstance(overrides, (list, tuple)) and all(isinstance(item, str) for item in overrides):
         return list(overrides)
     return overrides
+
+
+def assembly_request(
+    robot: str,
+    idn: int | str = 0,
+    base: str | None = DEFAULT,
+    grippers: Mapping[str, str | None] | None = None,
+    overrides: Any = None,
+    specs: Sequence[str | Path] = (),
+    kind: str = "load_model",
+) -> KeyedRequest:
+    """The request ``load_model(robot, idn, base, grippers, overrides, specs=specs)`` makes; it is
+    ``assemble(...).get_model()``, so ``assemble`` makes the same request and one record answers
+    either (``kind`` ``"create_robot"``: ``create_robot(robot, idn, overrides=...)``, no base or
+    grippers)."""
+    spec_file = spec_file_path(robot)
+    return keyed(
+        {
+            "kind": kind,
+            "robot": str(spec_file) if spec_file is not None else robot,
+            "idn": idn,
+            "base": base,
+            "grippers": dict(grippers) if grippers is not None else None,
+            "overrides": _plain(overrides),
+            "specs": [str(Path(folder).resolve()) for folder in specs],
+        }
+    )
 
 
 def load_model(
@@ -47,16 +73,7 @@ def load_model(
     cache without reading any spec, as long as every spec file, spec folder and model input it
     was made from is unchanged; ``cache=False`` compiles (and records nothing).
     """
-    spec_file = spec_file_path(robot)
-    request = keyed({
-        "kind": "load_model",
-        "robot": str(spec_file) if spec_file is not None else robot,
-        "idn": idn,
-        "base": base,
-        "grippers": dict(grippers) if grippers is not None else None,
-        "overrides": _plain(overrides),
-        "specs": [str(Path(folder).resolve()) for folder in specs],
-    })
+    request = assembly_request(robot, idn, base, grippers, overrides, specs)
     if cache:
         model = answered_model(request)
         if model is not None:

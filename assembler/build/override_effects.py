@@ -14,8 +14,8 @@ import mujoco
 import numpy as np
 
 from assembler.cache.file_state import buffer_digest
-from assembler.spec.documents import Override
 from assembler.models import RobotModel
+from assembler.spec.documents import Override
 
 
 def model_digest(model: mujoco.MjModel) -> str:

@@ -15,9 +15,9 @@ from typing import Any
 
 import mujoco
 
+from assembler.build.service import default_store, load_entry
 from assembler.cache.dependencies import Recorder
 from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
-from assembler.build.service import default_store, load_entry
 from assembler.cache.settings import cache_disabled
 
 Request = Mapping[str, Any]
@@ -47,25 +47,40 @@ def keyed(request: Request) -> KeyedRequest:
     return KeyedRequest(request, request_key(request))
 
 
-def _record_of(request: KeyedRequest) -> RequestRecord | None:
+def record_of(request: KeyedRequest) -> RequestRecord | None:
+    """The record of a request answered before, if nothing it was made from changed (None with the
+    cache disabled, or for a request that is not plain data)."""
     if cache_disabled() or request.key is None:
         return None
     return default_request_store().load(request.key)
 
 
+_record_of = record_of  # the name tests/cache/test_request_records.py imports
+
+
 def answered_model(request: KeyedRequest) -> mujoco.MjModel | None:
     """The compiled model of a request answered before, if nothing it was made from changed."""
-    record = _record_of(request)
-    return None if record is None else load_entry(record.model_key)
+    record = record_of(request)
+    return None if record is None else recorded_model(record)
+
+
+def recorded_model(record: RequestRecord) -> mujoco.MjModel | None:
+    """The model a record names, if its entry is still there with its files unchanged."""
+    return load_entry(record.model_key)
+
+
+def recorded_xml(record: RequestRecord) -> str | None:
+    """The XML a record's entry holds, if it holds its XML and its files are unchanged."""
+    return default_store().load_xml(record.model_key)
 
 
 def answered_xml(request: KeyedRequest) -> tuple[str, RequestRecord] | None:
     """The emitted XML of a request answered before, and its record (the notes printed with it
     then), if nothing it was made from changed and the entry holds its XML."""
-    record = _record_of(request)
+    record = record_of(request)
     if record is None:
         return None
-    xml = default_store().load_xml(record.model_key)
+    xml = recorded_xml(record)
     return None if xml is None else (xml, record)
 
 

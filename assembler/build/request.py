@@ -17,14 +17,13 @@ from pathlib import Path
 
 import mujoco
 
-from assembler.registry.arguments import is_spec_file
-from assembler.registry.instances import assemble
-from assembler.cache.key import cache_key
 from assembler.build.repeat import KeyedRequest, Origin, record
-from assembler.registry.catalog import add_spec_folders, register_specs
-from assembler.spec.documents import Overrides
+from assembler.files.paths import shipped_specs_dir
 from assembler.models import REGISTRIES, PartModel, RobotModel
-from assembler.files.paths import is_file, shipped_specs_dir
+from assembler.registry.arguments import is_spec_file
+from assembler.registry.catalog import add_spec_folders, register_specs
+from assembler.registry.instances import assemble
+from assembler.spec.documents import Overrides
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:

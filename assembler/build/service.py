@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.build.compile import compile_and_emit, compile_home
+from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.cache.folder import FolderInfo
 from assembler.cache.folder import clear as clear_folder
 from assembler.cache.inputs import BuildInputs

@@ -27,6 +27,12 @@ DIFF_FORMATS: tuple[str, ...] = ("json", "markdown", "text")
 VIEWS: tuple[str, ...] = ("front", "side", "top", "iso")
 """``assembler render``'s views (``assembler.tools.render.VIEWS``; a test keeps them equal)."""
 
+LINT_TARGETS: tuple[str, ...] = ("mujoco", "mjwarp", "mjx")
+"""``assembler lint --target`` choices (``assembler.tools.lint.ENGINES``; a test keeps them equal)."""
+
+BUILD_TARGETS: tuple[str, ...] = ("mujoco", "mjwarp")
+"""``assembler build --target`` choices: MuJoCo alone, or also MuJoCo Warp's put_model."""
+
 LABELS: tuple[str, ...] = ("bodies", "joints", "sites")
 """``assembler render --labels`` choices (``assembler.tools.render.LABELS``; a test keeps them equal)."""
 
@@ -156,6 +162,13 @@ def _lint(parser: argparse.ArgumentParser) -> None:
         metavar="ROBOT",
         help="more robots, spec files or spec folders (bases and grippers alone)",
     )
+    parser.add_argument(
+        "--target",
+        choices=LINT_TARGETS,
+        default="mujoco",
+        help="also report what this engine refuses or runs badly: mjwarp (MuJoCo Warp, RA801-803), "
+        "mjx (MJX, RA811-815); the engines need not be installed",
+    )
     add_format_argument(parser)
 
 
@@ -163,6 +176,12 @@ def _build(parser: argparse.ArgumentParser) -> None:
     add_assembly_arguments(parser)
     _output(parser)
     parser.add_argument("--bundle", metavar="DIR", help="write the XML and copies of its assets to DIR")
+    parser.add_argument(
+        "--target",
+        choices=BUILD_TARGETS,
+        default="mujoco",
+        help="mjwarp: also hand the model to MuJoCo Warp's put_model (when installed) before writing",
+    )
 
 
 def _scene(parser: argparse.ArgumentParser) -> None:

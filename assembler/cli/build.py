@@ -11,12 +11,18 @@ from pathlib import Path
 from assembler.build.request import record_answer
 from assembler.cli.common import assembled, idle_override_warnings, use_cache
 from assembler.cli.quick_build import request_of, robot_file, write_xml
+from assembler.tools.engine_check import check_with_mujoco_warp
 
 
 def run(args: argparse.Namespace) -> int:
     robot = assembled(args)
     xml = robot.get_xml(cache=use_cache(args))  # compiled first: a robot that does not compile writes nothing
     notes = idle_override_warnings(args)  # every --set checked before anything is written
+    if args.target == "mjwarp":  # before writing: a model MuJoCo Warp refuses writes nothing either
+        print(
+            check_with_mujoco_warp(robot.get_model(cache=use_cache(args)), type(robot).__name__),
+            file=sys.stderr,
+        )
     write_xml(args, xml, type(robot).__name__)
     for note in notes:
         print(note, file=sys.stderr)

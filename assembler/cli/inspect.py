@@ -8,6 +8,7 @@ import json
 from assembler.cli.common import bare_robot, override_flags, table
 from assembler.files.paths import display_path
 from assembler.models.actuator_table import ActuatorRecord
+from assembler.models.physical import PhysicalTable
 from assembler.spec.schema import JOINT_RULE_ATTRIBUTES
 
 
@@ -31,7 +32,23 @@ def run(args: argparse.Namespace) -> int:
             }
             for record in robot.actuator_table
         }
-        summary = {"robot": type(robot).__name__, "dof": robot.dof, "joints": joints, "actuators": actuators}
+        physical = robot.physical
+        bodies = {
+            robot.naming_prefix + body: {f: {"value": v.value, "source": str(v)} for f, v in values.items()}
+            for body, values in physical.bodies.items()
+        }
+        geoms = {
+            robot.naming_prefix + geom: {"friction": {"value": list(v.value), "source": str(v)}}  # type: ignore[arg-type]
+            for geom, v in physical.geoms.items()
+        }
+        summary = {
+            "robot": type(robot).__name__,
+            "dof": robot.dof,
+            "joints": joints,
+            "actuators": actuators,
+            "bodies": bodies,
+            "geoms": geoms,
+        }
         print(json.dumps(summary, indent=2))
         return 0
     loaded = type(robot).loaded
@@ -57,7 +74,23 @@ def run(args: argparse.Namespace) -> int:
     if robot.actuator_table:
         print()
         print(table(_actuator_rows(robot.naming_prefix, robot.actuator_table)))
+    if robot.physical.bodies or robot.physical.geoms:
+        print()
+        print(table(_physical_rows(robot.naming_prefix, robot.physical)))
     return 0
+
+
+def _physical_rows(prefix: str, physical: PhysicalTable) -> list[list[str]]:
+    """One row per scaled body (its factors) and per geom given a friction, with the entry that set each."""
+    rows = [["body or geom", "mass factor", "size factor", "inertia factor", "friction", "source"]]
+    for body, values in physical.bodies.items():
+        size, mass, inertia = physical.factors(body)
+        sources = ", ".join(sorted({str(v) for v in values.values()}))
+        rows.append([prefix + body, f"{mass:.6g}", f"{size:.6g}", f"{inertia:.6g}", "-", sources])
+    for geom, value in physical.geoms.items():
+        friction = " ".join(f"{v:g}" for v in value.value)  # type: ignore[union-attr]
+        rows.append([prefix + geom, "-", "-", "-", friction, str(value)])
+    return rows
 
 
 def _actuator_rows(prefix: str, records: list[ActuatorRecord]) -> list[list[str]]:

@@ -80,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
     problems: list[Problem] = []
     for cls in classes:
         try:
-            findings = lint(_target(cls, args))
+            findings = lint(_target(cls, args), args.target)
         except AssemblerError as error:  # a part that does not assemble: reported like validate does
             problems.extend(error.problems)
             continue

@@ -2,7 +2,8 @@
 
 Spec files are shown short: relative to the working directory when below it, and shipped specs
 as ``specs/...`` (where they sit in a checkout) even when read from an installed package's
-``site-packages/assembler/_shipped/specs``.
+``site-packages/assembler/_shipped/specs``, marked ``(shipped)``: a lab's own ``specs/`` folder
+reads the same, and a reader must tell the project's specs from the lab's.
 """
 
 from __future__ import annotations
@@ -29,14 +30,16 @@ def _dof_text(cls: type[PartModel]) -> str:
 
 
 def short_path(path: Path) -> str:
-    """A spec file as a user reads it: below the working directory, or ``specs/...`` when shipped."""
-    shown = display_path(path)
-    if not Path(shown).is_absolute():
-        return shown
+    """A spec file as a user reads it: below the working directory, or ``specs/...`` when shipped,
+    then marked ``(shipped)``."""
     shipped = shipped_specs_dir().resolve()
     if path.is_relative_to(shipped):
-        return str(Path(shipped.name) / path.relative_to(shipped))
-    return shown
+        shown = display_path(path)
+        short = (
+            shown if not Path(shown).is_absolute() else str(Path(shipped.name) / path.relative_to(shipped))
+        )
+        return f"{short} (shipped)"
+    return display_path(path)
 
 
 def _source(cls: type[PartModel]) -> str:

@@ -71,7 +71,7 @@ def answer(args: argparse.Namespace) -> int | None:
     """Carry out ``build`` from the cache and return its exit code, or None when the cache cannot
     answer (the full command runs then, and records ``args.request``, the request made here)."""
     plain = build_request(args)
-    if plain is None:
+    if plain is None or args.target != "mujoco":  # an engine's check needs the model itself
         return None
     request = args.request = keyed(plain)
     with allowing(args.allow_path):  # as the full command runs: the allowed folders are in the key

@@ -17,6 +17,7 @@ import mujoco
 
 from assembler.errors import MjcfError
 from assembler.files.paths import display_path
+from assembler.mjcf.emit import to_xml
 from assembler.mjcf.versions import mujoco_at_least
 
 PREFIXES_TENDON_MATERIALS_AND_SKINS = (3, 16)
@@ -65,4 +66,4 @@ def settle_default_site_materials(part: mujoco.MjSpec) -> mujoco.MjSpec:
         return part
     for default in with_material:
         default.site.material = ""
-    return mujoco.MjSpec.from_string(part.to_xml())
+    return mujoco.MjSpec.from_string(to_xml(part))  # every digit: MuJoCo's writer keeps six

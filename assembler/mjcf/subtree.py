@@ -17,6 +17,7 @@ import mujoco
 from assembler.errors import MjcfError
 from assembler.files.paths import display_path
 from assembler.mjcf import mujoco_warnings
+from assembler.mjcf.emit import to_xml
 from assembler.mjcf.source import MjcfSource
 
 _PREFIX = "subtree__"
@@ -35,7 +36,7 @@ def subtree_source(source: MjcfSource, body: str) -> MjcfSource:
     part.compiler.degree = source.pristine.compiler.degree
     part.worldbody.add_frame().attach_body(top, _PREFIX, "")
     with mujoco_warnings.collected():
-        text = part.to_xml()
+        text = to_xml(part)  # every digit: MuJoCo's writer keeps six (ranges, masses, inertias)
     text = text.replace(f'"{_PREFIX}main"', f'"{_MAIN}"').replace(f'="{_PREFIX}', '="')
     spec = mujoco.MjSpec.from_string(text)
     for copied in spec.bodies[1:]:  # poses as given, not as written (MuJoCo writes 6 digits)

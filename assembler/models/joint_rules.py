@@ -91,10 +91,11 @@ def matching_joints(pattern: str, joint_names: Sequence[str]) -> list[str]:
     return [name for name in joint_names if fnmatch.fnmatchcase(name, pattern)]
 
 
-def no_match(pattern: str, names: Sequence[str], what: str = "joint") -> str:
+def no_match(pattern: str, names: Sequence[str], what: str = "joint", plural: str = "") -> str:
     """The one wording of a name or glob that matches nothing, with the closest name."""
     suggestion = did_you_mean(pattern, names)
-    return f"no {what} matches '{pattern}'.{suggestion} {what.capitalize()}s: {summarize_names(list(names))}"
+    listed = (plural or f"{what}s").capitalize()
+    return f"no {what} matches '{pattern}'.{suggestion} {listed}: {summarize_names(list(names))}"
 
 
 def apply_joint_overrides(

@@ -25,7 +25,9 @@ from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
+from assembler.models.collision_colour import collision_colour_note, colour_collision_geoms
 from assembler.models.joint_rules import JointTable
+from assembler.models.physical import PhysicalTable, apply_physical
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
 from assembler.models.spec_names import NameCheck
@@ -158,30 +160,29 @@ class PartModel(metaclass=RegisteringMeta):
         """Every actuator of the part (unprefixed): the file's, then the spec's, with each value's source."""
         return self.prepared().actuators
 
+    @property
+    def physical(self) -> PhysicalTable:
+        """Body -> mass and size factors, geom -> friction, with the spec entries that gave them."""
+        return self.prepared().physical
+
     def part_mjspec(self) -> mujoco.MjSpec:
-        """A fresh copy of the prepared spec, with joint values applied, and robosuite's collision
-        colours where the spec asks for them (``collision_colour: robosuite``)."""
+        """A fresh copy of the prepared spec, with joint values, the ``bodies:``/``geoms:`` entries
+        applied, and robosuite's collision colours where the spec asks for them
+        (``collision_colour: robosuite``)."""
         mjspec = self.prepared_mjspec.copy()
+        apply_physical(mjspec, self.physical)
         for name, values in self.joint_values.items():
             joint = mjspec.joint(name)
             for attribute, joint_value in values.items():
                 set_joint_attribute_value(joint, attribute, joint_value.value)
         if self.spec.collision_colour == "robosuite":
-            for geom in mjspec.geoms:
-                if geom.group == COLLISION_GROUP:  # robosuite's convention: collision geoms in group 0
-                    geom.rgba = self.collision_rgba
-                    geom.material = ""
+            colour_collision_geoms(mjspec, self.collision_rgba)
         return mjspec
 
     def conventions_applied(self) -> list[str]:
         """What the part's build changes in its file's look by a convention the spec asks for."""
-        if self.spec.collision_colour != "robosuite":
-            return []
-        colour = " ".join(f"{value:g}" for value in self.collision_rgba)
-        return [
-            f"collision geoms (group 0) lose their materials and are coloured {colour} "
-            "(collision_colour: robosuite)"
-        ]
+        robosuite = self.spec.collision_colour == "robosuite"
+        return [collision_colour_note(self.collision_rgba)] if robosuite else []
 
     def part_inputs(self) -> PartInputs:
         """What this part contributes to an assembly's cache key (no MJCF is read)."""

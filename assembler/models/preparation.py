@@ -29,6 +29,7 @@ from assembler.models.joint_rules import (
     matching_joints,
     no_match,
 )
+from assembler.models.physical import PhysicalTable, resolve_physical
 from assembler.models.provenance import Provenance
 from assembler.models.spec_names import NameCheck
 from assembler.spec.fieldpath import FieldPath
@@ -60,6 +61,9 @@ class PreparedPart:
 
     actuators: list[ActuatorRecord]
     """Every actuator of the part: the file's, then those the spec declares, with their values' sources."""
+
+    physical: PhysicalTable
+    """The bodies' mass and size factors and the geoms' frictions the spec's ``bodies:``/``geoms:`` give."""
 
 
 def removed_joints(
@@ -162,9 +166,11 @@ def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[P
     kept = named_joints(mjspec)
     actuators, declared = declare_actuators(mjspec, spec.actuators, source.velocity_limits, problem)
     problems += declared + add_contact_excludes(spec, mjspec, problem)
+    physical, physical_problems = resolve_physical(mjspec, spec.bodies, spec.geoms, problem)
+    problems += physical_problems
     try:
         table = joint_table(spec, source, kept, problem)
     except SpecError as error:
         problems += error.problems
         table = {}
-    return PreparedPart(source, mjspec, root, kept, table, actuators), problems
+    return PreparedPart(source, mjspec, root, kept, table, actuators, physical), problems

@@ -26,8 +26,12 @@ def create_robot(robot_name: str, *args: object, overrides: Overrides = None, **
 
     ``overrides`` (``{"joint_defaults.damping": 0.2}`` or ``["init_qpos[3]=-2.0"]``) change spec
     fields for this instance only; the registered class is left as it is."""
-    cls = with_overrides(REGISTERED_ROBOTS.lookup(robot_name), overrides)
-    return cls(*args, **kwargs)  # type: ignore[arg-type]
+    return robot_class(robot_name, overrides)(*args, **kwargs)  # type: ignore[arg-type]
+
+
+def robot_class(robot_name: str, overrides: Overrides = None) -> type[RobotModel]:
+    """The class of :func:`create_robot`'s robot: the registered one, or its variant with ``overrides``."""
+    return with_overrides(REGISTERED_ROBOTS.lookup(robot_name), overrides)
 
 
 def create_base(base_name: str, idn: int | str = 0) -> RobotBaseModel:

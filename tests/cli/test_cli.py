@@ -305,6 +305,6 @@ def test_list_sorts_by_name_and_shows_shipped_specs_short_from_anywhere(
         rows = [line.split() for line in out.splitlines()[1:]]
         names = [row[0] for row in rows]
         assert code == 0 and names == sorted(names, key=str.casefold)
-        assert all(row[-1].startswith("specs/") and row[-1].endswith(".yaml") for row in rows)
+        assert all(row[-2].startswith("specs/") and row[-2:][1] == "(shipped)" for row in rows)
         if what == "robots":
-            assert ["Sparrow7", "manipulator", "7", "specs/sparrow7.yaml"] in rows
+            assert ["Sparrow7", "manipulator", "7", "specs/sparrow7.yaml", "(shipped)"] in rows

@@ -6,6 +6,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import mujoco
+import numpy as np
 
 import assembler
 
@@ -32,7 +33,7 @@ ARM = """\
       <geom type="box" size="0.05 0.05 0.05" mass="1"/>
       <site name="base_site"/>
       <body name="link" pos="0 0 0.1">
-        <joint name="j1" axis="0 0 1" range="-1 1"/>
+        <joint name="j1" axis="0 0 1" range="-1 5.46288124"/>
         <geom type="box" size="0.05 0.05 0.05" mass="1"/>
         <site name="marker_site" class="marker"/>
         <body name="right_hand" pos="0 0 0.1"/>
@@ -55,3 +56,17 @@ def test_site_materials_from_an_included_default_reach_the_compiled_robot(
     materials = {model.site(s).name: model.mat(model.site_matid[s]).name for s in range(model.nsite)}
     assert materials == {"robot0_base_site": "robot0_red", "robot0_marker_site": "robot0_blue"}
     assert [direct.mat(m).name for m in direct.site_matid] == ["red", "blue"]
+
+
+def test_a_part_read_again_for_its_site_materials_keeps_every_digit(
+    write: Callable[[str, str], Path],
+) -> None:
+    """Jaco's joint_2 range was cut to MuJoCo's six written digits (5.46288 for 5.462881) by the re-read."""
+    write("arm/common.xml", COMMON)
+    direct = mujoco.MjModel.from_xml_path(str(write("arm/arm.xml", ARM)))
+    (cls,) = assembler.register_specs(write("arm/arm.yaml", "name: Kinovaish\nmjcf: arm.xml\n"))
+
+    model = cls(idn=0).get_model(cache=False)
+
+    # 15 significant digits, as every model we write (emit.XML_SIGNIFICANT_DIGITS); six lost 1e-6
+    np.testing.assert_allclose(model.joint("robot0_j1").range, direct.joint("j1").range, rtol=1e-13, atol=0)

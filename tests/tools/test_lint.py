@@ -274,7 +274,7 @@ ROBOSUITE_CASES = {
             "probe/probe.xml": PROBE_MJCF,
             "probe/probe.yaml": PROBE_SPEC.replace("robosuite: {actuation: torque}\n", ""),
         },
-        ("RA701", "warning", "Probe"),
+        ("RA701", "error", "Probe"),
         "the actuators robosuite's controllers drive (robot0_act_shoulder, robot0_act_elbow) are position "
         "servos, but those controllers write torques into ctrl and robosuite.actuation is not set: robosuite "
         "refuses the robot",
@@ -300,7 +300,7 @@ ROBOSUITE_CASES = {
     ),
     "gripper with actuators and no actions": (
         {"hand/finger.xml": FINGER_MJCF, "hand/finger.yaml": FINGER_SPEC.split("actions:")[0]},
-        ("RA703", "warning", "Finger"),
+        ("RA703", "error", "Finger"),
         "the gripper has actuators (finger_act) but no actions: block saying how a policy's actions drive "
         "them: robosuite refuses it",
         "add actions: with one entry per action dimension, naming the actuators it drives and their "

@@ -61,6 +61,7 @@ def test_an_acknowledgement_needs_a_code_and_a_reason(
 def test_shipped_specs_with_robosuites_known_flaws_lint_without_failing(
     capsys: pytest.CaptureFixture[str], name: str
 ) -> None:
+    pytest.importorskip("robosuite")  # their model files are read from the installed robosuite package
     code, findings = lint_json(capsys, name)
     assert code == 0
     assert {f["code"] for f in findings if f["acknowledged"]} & {"RA101", "RA601"}

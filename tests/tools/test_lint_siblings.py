@@ -16,7 +16,10 @@ def test_a_spec_path_finds_the_gripper_spec_beside_it(
     capsys: pytest.CaptureFixture[str], write: Write
 ) -> None:
     write("probe/pinch.xml", GRIPPER_MJCF)
-    write("probe/pinch.yaml", "kind: gripper\nname: Pinch\nmjcf: pinch.xml\n")
+    write(
+        "probe/pinch.yaml",
+        "kind: gripper\nname: Pinch\nmjcf: pinch.xml\nactions: {dimensions: [{actuators: [finger_act]}]}\n",
+    )
     write("probe/scene.yaml", "kind: scene\nname: S\nrobots: [{robot: Probe}]\n")  # not a part: left alone
     code, findings = lint_json(capsys, str(probe(write, spec=WITH_GRIPPER)))
     report = capsys.readouterr()

@@ -14,6 +14,7 @@ from assembler.spec.schema.joints import (
     JointRule,
 )
 from assembler.spec.schema.parts import PartSpec
+from assembler.spec.schema.physical import BODY_SCALES, BodyScale, GeomFriction
 from assembler.spec.schema.robot import GROUPS, Arm, GripperMount, JointGroups, RobotSpec
 from assembler.spec.schema.scene import SceneRobot, SceneSpec
 
@@ -21,6 +22,7 @@ SPEC_KINDS: dict[str, type[PartSpec]] = {"robot": RobotSpec, "base": BaseSpec, "
 """The model of each part spec's ``kind`` (robot specs may leave ``kind`` out)."""
 
 __all__ = [
+    "BODY_SCALES",
     "GROUPS",
     "JOINT_RULE_ATTRIBUTES",
     "OVERRIDABLE_ATTRIBUTES",
@@ -30,9 +32,11 @@ __all__ = [
     "Arm",
     "BaseSpec",
     "BaseType",
+    "BodyScale",
     "ExperimentRobot",
     "ExperimentSpec",
     "FiniteFloat",
+    "GeomFriction",
     "GripperMount",
     "GripperSpec",
     "InverseIndexRule",

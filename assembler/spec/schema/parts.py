@@ -11,6 +11,7 @@ from assembler.spec.schema.common import FiniteFloat, StrictModel, rule_error
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.spec.schema.joints import JointDefaults, JointOverride
 from assembler.spec.schema.lint import LintOptions
+from assembler.spec.schema.physical import BodyScale, GeomFriction
 
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
 
@@ -58,6 +59,12 @@ class PartSpec(StrictModel):
 
     joints: list[JointOverride] = Field(default_factory=list)
     """Per-joint overrides, applied in order after the default rules."""
+
+    bodies: list[BodyScale] = Field(default_factory=list)
+    """Mass and size factors of bodies (names or globs), applied in order (a later entry wins)."""
+
+    geoms: list[GeomFriction] = Field(default_factory=list)
+    """Friction of geoms (names or globs), applied in order (a later entry wins)."""
 
     actuators: list[ActuatorDeclaration] = Field(default_factory=list)
     """Actuators to add, one per matched joint; a later entry replaces an earlier one's on the same joint."""

@@ -57,14 +57,15 @@ def grip_frames_added_for_robosuite(target: LintTarget) -> Iterator[Finding]:
 
 
 def gripper_without_actions(target: LintTarget) -> Iterator[Finding]:
-    """RA703 (warning): a gripper has actuators but no ``actions:`` saying how a policy drives them."""
+    """RA703 (error): a gripper has actuators but no ``actions:`` saying how a policy drives them
+    (the bridge refuses it at ``robosuite.make``)."""
     for part in _grippers(target):
         if part.spec.actions is not None or not part.actuators:
             continue
         names = ", ".join(name[len(part.naming_prefix) :] for name in part.actuators)
         yield Finding(
             code="RA703",
-            severity="warning",
+            severity="error",
             subject=type(part).__name__,
             why=(
                 f"the gripper has actuators ({names}) but no actions: block saying how a policy's actions "

@@ -1,5 +1,8 @@
 """RA701, RA704: a robot that robosuite's environments would refuse or fail on.
 
+RA701 is an error for a robot robosuite is offered (``robosuite.enabled``, the default): the bridge
+refuses it at ``robosuite.make``.
+
 robosuite's arm controllers write torques into ``ctrl``, so the bridge needs to be told what to do
 with position servos there (``robosuite.actuation``), and turning a servo into a motor takes its
 force range. Its composite controller reads each arm's origin from a site ``{arm}_center`` at
@@ -48,7 +51,7 @@ def servos_robosuite_cannot_drive(target: LintTarget) -> Iterator[Finding]:
         if servos and choice is None:
             yield Finding(
                 code="RA701",
-                severity="warning",
+                severity="error" if robot.spec.robosuite.enabled else "warning",
                 subject=type(robot).__name__,
                 why=(
                     f"the actuators robosuite's controllers drive ({', '.join(servos)}) are position servos, "

@@ -1,0 +1,157 @@
+"""``entity_cfg``: an assembled robot as an mjlab ``EntityCfg`` (spec, actuators, home pose).
+
+- ``spec_fn`` returns a fresh copy of the robot's assembled ``MjSpec`` on every call (mjlab edits
+  and attaches what it gets), without keyframes: mjlab writes its own ``init_state`` key.
+- Actuators: ``"xml"`` wraps the actuators the assembly already has (``XmlActuatorCfg``, one entry
+  naming exactly the actuated joints, so mjlab does not also match sites); ``"builtin"`` maps each
+  position servo and motor to mjlab's ``BuiltinPositionActuatorCfg``/``BuiltinMotorActuatorCfg`` with
+  the compiled gains and force limits, and ``spec_fn`` then leaves the assembly's actuators out.
+- ``init_state`` holds the home pose joint by joint. mjlab's ``joint_pos=None`` (take the spec's
+  keyframe) fails at reset on a float64/float32 mismatch in mjlab 1.6.0, so the pose is always given.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from typing import Literal
+
+import mujoco
+from mjlab.actuator import BuiltinMotorActuatorCfg, BuiltinPositionActuatorCfg, XmlActuatorCfg
+from mjlab.actuator.actuator import ActuatorCfg
+from mjlab.entity import EntityArticulationInfoCfg, EntityCfg
+
+from assembler.errors import AssemblerError, Problem
+from assembler.mjcf.keyframe import HOME_KEY
+from assembler.models import RobotModel
+from assembler.registry.instances import assemble
+
+ActuatorChoice = Literal["xml", "builtin"]
+"""``xml``: mjlab drives the assembly's own actuators; ``builtin``: mjlab's built-in configs replace them."""
+
+JOINT = mujoco.mjtObj.mjOBJ_JOINT
+SCALAR_JOINTS = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+
+
+def _exact(name: str) -> str:
+    """A regular expression matching ``name`` only (mjlab matches names with ``re.fullmatch``)."""
+    return re.escape(name)
+
+
+def home_joint_positions(model: mujoco.MjModel) -> tuple[tuple[float, ...] | None, dict[str, float]]:
+    """The home keyframe as mjlab's init_state: the free joint's (pos, quat) if the robot floats, and
+    each hinge or slide joint's position."""
+    key = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY)
+    qpos = model.key_qpos[key] if key >= 0 else model.qpos0
+    root: tuple[float, ...] | None = None
+    positions: dict[str, float] = {}
+    for joint in range(model.njnt):
+        address, kind = int(model.jnt_qposadr[joint]), int(model.jnt_type[joint])
+        name = mujoco.mj_id2name(model, JOINT, joint) or f"joint #{joint}"
+        if kind == int(mujoco.mjtJoint.mjJNT_FREE):
+            root = tuple(float(v) for v in qpos[address : address + 7])
+        elif kind in SCALAR_JOINTS:
+            positions[name] = float(qpos[address])
+        else:
+            raise AssemblerError(
+                f"{name}: a ball joint; mjlab's init_state sets one position per joint (hinge or slide)"
+            )
+    return root, positions
+
+
+def _force_limit(model: mujoco.MjModel, actuator: int) -> float | None:
+    if not model.actuator_forcelimited[actuator]:
+        return None
+    return float(max(abs(v) for v in model.actuator_forcerange[actuator]))
+
+
+def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
+    """mjlab built-in configs for the model's actuators: position servos (kp, kv, force limit) and
+    motors (gear, force limit), one per actuated joint; any other kind is refused, by name."""
+    configs: list[ActuatorCfg] = []
+    problems: list[str] = []
+    fixed, affine = int(mujoco.mjtGain.mjGAIN_FIXED), int(mujoco.mjtBias.mjBIAS_AFFINE)
+    for actuator in range(model.nu):
+        name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator) or f"actuator #{actuator}"
+        if int(model.actuator_trntype[actuator]) != int(mujoco.mjtTrn.mjTRN_JOINT):
+            problems.append(
+                f"{name}: drives no joint (mjlab's built-in actuators drive joints); use actuators='xml'"
+            )
+            continue
+        joint = mujoco.mj_id2name(model, JOINT, int(model.actuator_trnid[actuator, 0]))
+        gain, bias = model.actuator_gainprm[actuator], model.actuator_biasprm[actuator]
+        gaintype, biastype = int(model.actuator_gaintype[actuator]), int(model.actuator_biastype[actuator])
+        gear, limit = float(model.actuator_gear[actuator, 0]), _force_limit(model, actuator)
+        direct = int(model.actuator_dyntype[actuator]) == int(mujoco.mjtDyn.mjDYN_NONE)
+        is_servo = gaintype == fixed and biastype == affine and bias[1] == -gain[0] and bias[0] == 0
+        if direct and is_servo and gear == 1.0:
+            configs.append(
+                BuiltinPositionActuatorCfg(
+                    target_names_expr=(_exact(joint),),
+                    stiffness=float(gain[0]),
+                    damping=float(-bias[2]),
+                    effort_limit=limit,
+                )
+            )
+        elif direct and gaintype == fixed and gain[0] == 1.0 and biastype == int(mujoco.mjtBias.mjBIAS_NONE):
+            if limit is None:
+                problems.append(f"{name}: a motor without forcerange; mjlab's motor needs an effort limit")
+                continue
+            configs.append(
+                BuiltinMotorActuatorCfg(target_names_expr=(_exact(joint),), effort_limit=limit, gear=gear)
+            )
+        else:
+            problems.append(
+                f"{name}: neither a position servo nor a motor (gain {gaintype}, bias {biastype}); "
+                "use actuators='xml' to keep it as it is"
+            )
+    if problems:
+        raise AssemblerError([Problem(p) for p in problems])
+    return tuple(configs)
+
+
+def _spec_fn(robot: RobotModel, keep_actuators: bool) -> Callable[[], mujoco.MjSpec]:
+    def spec() -> mujoco.MjSpec:
+        copy = robot.mjspec.copy()
+        for key in list(copy.keys):
+            copy.delete(key)
+        if not keep_actuators:
+            for actuator in list(copy.actuators):
+                copy.delete(actuator)
+        return copy
+
+    return spec
+
+
+def entity_cfg(
+    robot: RobotModel | str,
+    actuators: ActuatorChoice = "xml",
+    pos: tuple[float, float, float] | None = None,
+) -> EntityCfg:
+    """The robot (a RobotModel, or a registered name assembled with its default base and grippers)
+    as an mjlab ``EntityCfg``: its spec, its actuators (``actuators``), its home pose as
+    ``init_state`` (the root at ``pos`` when given, else where the home keyframe puts it)."""
+    model = assemble(robot) if isinstance(robot, str) else robot
+    compiled = model.get_model()
+    root, joint_pos = home_joint_positions(compiled)
+    actuated = [
+        mujoco.mj_id2name(compiled, JOINT, int(compiled.actuator_trnid[a, 0]))
+        for a in range(compiled.nu)
+        if int(compiled.actuator_trntype[a]) == int(mujoco.mjtTrn.mjTRN_JOINT)
+    ]
+    if actuators == "xml":
+        configs: tuple[ActuatorCfg, ...] = (
+            (XmlActuatorCfg(target_names_expr=tuple(_exact(j) for j in actuated)),) if actuated else ()
+        )
+    else:
+        configs = mapped_actuators(compiled)
+    state = EntityCfg.InitialStateCfg(joint_pos={_exact(j): v for j, v in joint_pos.items()})
+    if root is not None:
+        state.pos, state.rot = (root[0], root[1], root[2]), (root[3], root[4], root[5], root[6])
+    if pos is not None:
+        state.pos = pos
+    return EntityCfg(
+        spec_fn=_spec_fn(model, keep_actuators=actuators == "xml"),
+        articulation=EntityArticulationInfoCfg(actuators=configs),
+        init_state=state,
+    )
