@@ -158,10 +158,9 @@ def test_eviction_counts_and_removes_the_xml_files(monkeypatch: pytest.MonkeyPat
     store = default_store()
     total = sum(path.stat().st_size for path in store.directory.rglob("*") if path.is_file())
     kept = sum(path.stat().st_size for path in store.directory.iterdir() if "json" in path.name)
-    # One bound counts every part, request records too (oldest first: Sparrow7's record, its entry,
-    # then Finch6's record): a byte less than all the rest makes Sparrow7's entry go.
-    records = total - sum(path.stat().st_size for path in store.directory.iterdir() if path.is_file())
-    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(total - 1 - records))
+    records = sum(path.stat().st_size for path in (store.directory / "requests").glob("*.json"))
+    # One bound counts every part: room for everything but one byte of the models (records go first).
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", str(total - records - 1))
     default_store().evict()
     left = sorted(path.suffix for path in store.directory.iterdir() if path.is_file())
     assert left == [".json", ".mjb", ".xml"] and kept > 0
