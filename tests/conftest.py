@@ -54,6 +54,25 @@ in 'arm'; 'elbow' gets damping 3 from its explicit class 'arm' and a literal fri
 TETRAHEDRON_OBJ = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 """A 0.1 m tetrahedron as OBJ text: the smallest mesh MuJoCo compiles, for tests that need a mesh file."""
 
+INCLUDING_ARM_MJCF = """\
+<mujoco model="arm">
+  <compiler angle="radian" meshdir="meshes"/>
+  <asset><mesh name="tet" file="tet.obj"/></asset>
+  <worldbody>
+    <body name="base">
+      <body name="link1" pos="0 0 0.1">
+        <joint name="joint1" axis="0 0 1" range="-3 3"/>
+        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
+        <body name="right_hand" pos="0 0 0.1"/>
+      </body>
+    </body>
+  </worldbody>
+  <include file="actuators.xml"/>
+</mujoco>
+"""
+"""One joint, a mesh (meshes/tet.obj) and an ``<include>``d actuators.xml: every kind of file a build
+reads, for tests of what is read and written."""
+
 TWO_LINK_SPEC = """\
 name: TwoLink
 mjcf: twolink.xml

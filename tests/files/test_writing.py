@@ -20,27 +20,12 @@ import pytest
 from assembler.build.service import wait_for_writes
 from assembler.cli import main
 from assembler.urdf.meshes import importable
-from tests.conftest import use_private_cache
+from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
 
-TETRA = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+TETRA = TETRAHEDRON_OBJ
 
-ARM_MJCF = """\
-<mujoco model="arm">
-  <compiler angle="radian" meshdir="meshes"/>
-  <asset><mesh name="tet" file="tet.obj"/></asset>
-  <worldbody>
-    <body name="base">
-      <body name="link1" pos="0 0 0.1">
-        <joint name="joint1" axis="0 0 1" range="-3 3"/>
-        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
-        <body name="right_hand" pos="0 0 0.1"/>
-      </body>
-    </body>
-  </worldbody>
-  <include file="actuators.xml"/>
-</mujoco>
-"""
+ARM_MJCF = INCLUDING_ARM_MJCF
 ACTUATORS = '<mujoco><actuator><position name="act1" joint="joint1" kp="50"/></actuator></mujoco>\n'
 SPEC = "name: WriteArm\nmjcf: arm.xml\n"
 
