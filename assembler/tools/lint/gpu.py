@@ -125,6 +125,24 @@ def option_finding(
     )
 
 
+def refused_solver_and_enable_flags(
+    target: LintTarget, code: str, engine: Engine, solvers: tuple[str, ...], enabled: tuple[str, ...]
+) -> Iterator[Finding]:
+    """The solver and enable flags of ``<option>`` that ``engine`` refuses (both engines check these
+    two alike; each has more of its own)."""
+    option = target.model.opt
+    solver = mujoco.mjtSolver(int(option.solver)).name
+    if solver in solvers:
+        yield option_finding(
+            target, code, engine, f"solver {solver}", 'set <option solver="Newton"/> (or "CG")'
+        )
+    for name in flag_names(int(option.enableflags), "mjtEnableBit", enabled):
+        flag = name.removeprefix("mjENBL_").lower()
+        yield option_finding(
+            target, code, engine, f"enable flag {name}", f'remove <flag {flag}="enable"/> from <option>'
+        )
+
+
 def flag_names(flags: int, enum: str, refused: tuple[str, ...]) -> list[str]:
     """The refused members of flag enum ``enum`` (e.g. ``mjtEnableBit``) set in ``flags``."""
     bits = getattr(mujoco, enum)

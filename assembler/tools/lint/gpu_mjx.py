@@ -17,10 +17,10 @@ from assembler.tools.lint.finding import Finding
 from assembler.tools.lint.gpu import (
     KindTable,
     collidable_pairs,
-    flag_names,
     geom_type_name,
     option_finding,
     refused_elements,
+    refused_solver_and_enable_flags,
 )
 from assembler.tools.lint.target import LintTarget
 
@@ -121,16 +121,9 @@ def mjx_refused_options(target: LintTarget) -> Iterator[Finding]:
     if integrator in MJX_INTEGRATORS_REFUSED:
         fix = 'set <option integrator="implicitfast"/> (or "Euler", "RK4")'
         yield option_finding(target, "RA812", "mjx", f"integrator {integrator}", fix)
-    solver = mujoco.mjtSolver(int(option.solver)).name
-    if solver in MJX_SOLVERS_REFUSED:
-        yield option_finding(
-            target, "RA812", "mjx", f"solver {solver}", 'set <option solver="Newton"/> (or "CG")'
-        )
-    for name in flag_names(int(option.enableflags), "mjtEnableBit", MJX_ENABLE_REFUSED):
-        flag = name.removeprefix("mjENBL_").lower()
-        yield option_finding(
-            target, "RA812", "mjx", f"enable flag {name}", f'remove <flag {flag}="enable"/> from <option>'
-        )
+    yield from refused_solver_and_enable_flags(
+        target, "RA812", "mjx", MJX_SOLVERS_REFUSED, MJX_ENABLE_REFUSED
+    )
     fluid = option.density > 0 or option.viscosity > 0 or bool(option.wind.any())
     if integrator == "mjINT_IMPLICITFAST" and fluid:
         fix = 'set <option integrator="Euler"/>, or density="0" viscosity="0" and no wind'

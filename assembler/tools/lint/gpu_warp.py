@@ -13,7 +13,13 @@ import mujoco
 import numpy as np
 
 from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.gpu import KindTable, flag_names, option_finding, refused_elements
+from assembler.tools.lint.gpu import (
+    KindTable,
+    flag_names,
+    option_finding,
+    refused_elements,
+    refused_solver_and_enable_flags,
+)
 from assembler.tools.lint.target import LintTarget
 
 WARP_ELEMENT_KINDS: tuple[KindTable, ...] = (
@@ -55,16 +61,9 @@ ELEMENT_FIX = {
 def warp_refused_options(target: LintTarget) -> Iterator[Finding]:
     """RA801 (error): a solver, flag or Jacobian setting MuJoCo Warp's put_model refuses."""
     option = target.model.opt
-    solver = mujoco.mjtSolver(int(option.solver)).name
-    if solver in WARP_SOLVERS_REFUSED:
-        yield option_finding(
-            target, "RA801", "mjwarp", f"solver {solver}", 'set <option solver="Newton"/> (or "CG")'
-        )
-    for name in flag_names(int(option.enableflags), "mjtEnableBit", WARP_ENABLE_REFUSED):
-        flag = name.removeprefix("mjENBL_").lower()
-        yield option_finding(
-            target, "RA801", "mjwarp", f"enable flag {name}", f'remove <flag {flag}="enable"/> from <option>'
-        )
+    yield from refused_solver_and_enable_flags(
+        target, "RA801", "mjwarp", WARP_SOLVERS_REFUSED, WARP_ENABLE_REFUSED
+    )
     for name in flag_names(int(option.disableflags), "mjtDisableBit", WARP_DISABLE_REFUSED):
         flag = name.removeprefix("mjDSBL_").lower()
         yield option_finding(
