@@ -19,7 +19,7 @@ from assembler.build.compile import compile_and_emit, compile_home
 from assembler.build.service import Assembly, compile_model, compile_xml, entry_key
 from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
-from assembler.files.writing import write_atomically
+from assembler.files.bundles import save_model
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import set_joint_attribute_value
@@ -262,7 +262,7 @@ class RobotModel(PlacedPart):
         return xml
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
-        """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""
-        target = Path(path)
-        write_atomically(target, self.get_xml(cache=cache))
-        return target
+        """Write the MJCF to ``path`` atomically; nothing is written if compilation fails. Assets
+        it names in the cache folder (meshes converted from COLLADA) are copied beside it, under
+        ``FILE-assets/``, as ``assembler build -o`` does: the file loads after the cache is cleared."""
+        return save_model(self.get_xml(cache=cache), Path(path))

@@ -254,6 +254,17 @@ def test_a_written_model_still_loads_after_the_cache_is_removed(urdf_arm: Path, 
 
 
 @NEEDS_CONVERTER
+def test_a_model_saved_from_python_still_loads_after_the_cache_is_removed(
+    urdf_arm: Path, tmp_path: Path
+) -> None:
+    assembler.register_specs("arm.yaml")
+    saved = assembler.assemble("DaeArm", base=None).save(tmp_path / "saved.xml")
+    shutil.rmtree(tmp_path / "cache")
+    assert mujoco.MjModel.from_xml_path(str(saved)).nmesh > 0
+    assert (tmp_path / "saved.xml-assets").is_dir()
+
+
+@NEEDS_CONVERTER
 def test_the_bound_clear_and_info_count_every_part(
     urdf_arm: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
