@@ -25,6 +25,7 @@ from assembler.tools.new.entries import Entry, spec_text
 from assembler.tools.new.naming import camel_case, free_name, name_source
 from assembler.tools.new.reading import ModelFile, read_model_file, spec_reference
 from assembler.tools.new.robosuite_names import robosuite_names
+from assembler.tools.new.scene import scene_cut, scene_entry
 from assembler.tools.new.tree import read_tree
 
 Kind = Literal["robot", "gripper"]
@@ -71,8 +72,9 @@ def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
     roots = [model.body(b).name for b in range(1, model.nbody) if model.body_parentid[b] == 0]
     if len(roots) > 1:
         entry.decide(
-            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}); a spec's "
-            "file holds one robot under one root body: point it at a file of the robot alone"
+            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}) that "
+            "mjcf_fixes could not cut down to one; a spec's file holds one robot under one root body: "
+            "point it at a file of the robot alone"
         )
     if not spec_reference(file, spec_path.parent).startswith(PACKAGE_SCHEME) and not _below(
         file.path, spec_path.parent
@@ -92,10 +94,15 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> New
     """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
     are relative to its folder); ``kind`` robot or gripper, guessed when None."""
     file = read_model_file(model_path)
+    cut = None
+    if file.format == "mjcf":
+        cut = scene_cut(file.path, frozenset(Path(p) for p, _, _ in file.source.files), file.model)
+        if cut is not None and cut.cuts:
+            file = read_model_file(model_path, cut.fixes)
     guessed_kind, why = _kind(file)
     chosen: Kind = kind or guessed_kind
     load_shipped_specs()
-    source = name_source(file.source.pristine.modelname, file.path)
+    source = name_source(file.source.pristine.modelname, file.path, scene=cut is not None)
     taken = {*registered_names(), *robosuite_names()}
     name = free_name(camel_case(source), taken, "Hand" if chosen == "gripper" else "Arm")
     named = Entry("name", name).guess(f"from '{source}'; the registry and class name, yours to choose")
@@ -111,6 +118,7 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> New
         named,
         Entry("description", f"{source} from {Path(file.reference).name}, as `assembler new` read it."),
         _file_entry(file, spec_path),
+        *([scene_entry(cut)] if cut is not None else []),
     ]
     tree = read_tree(file.model, hand=chosen == "gripper")
     entries += gripper_entries(file, tree) if chosen == "gripper" else robot_entries(file, tree)
