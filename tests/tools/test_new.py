@@ -132,27 +132,98 @@ def test_a_model_file_mujoco_refuses_is_one_line_naming_it(
     assert not model.with_name("broken.yaml").exists()
 
 
-SCENE = TWO_LINK_MJCF.replace(
-    "  <worldbody>\n",
-    '  <worldbody>\n    <body name="table" pos="1 0 0"><geom type="box" size="0.3 0.3 0.4"/></body>\n',
+ARM_ALONE = "<mujoco>\n" + TWO_LINK_MJCF.split("<worldbody>\n")[1].split("  </worldbody>")[0] + "</mujoco>\n"
+"""The two-link arm's bodies alone, as a file a task scene includes inside its <worldbody>."""
+
+TASK_SCENE = (
+    TWO_LINK_MJCF.split("  <worldbody>")[0]
+    + """  <include file="task_shared.xml"/>
+  <worldbody>
+    <geom name="floor0" type="plane" size="1 1 1"/>
+    <light name="light0" pos="0 0 3" dir="0 0 -1"/>
+    <body name="mocap0" mocap="true" pos="0.6 0 0.4"><geom type="box" size="0.01 0.01 0.01" contype="0" conaffinity="0"/></body>
+    <include file="task_arm.xml"/>
+    <body name="table0" pos="1 0 0.2"><geom type="box" size="0.3 0.3 0.2"/></body>
+  </worldbody>
+  <sensor><framepos name="target_pos" objtype="body" objname="table0"/></sensor>
+"""
+    + TWO_LINK_MJCF.split("  </worldbody>\n")[1]
 )
-"""The two-link arm in a scene with a table beside it (as gymnasium-robotics' task files come)."""
+"""The two-link arm inside a task scene as gymnasium-robotics writes one (Fetch's reach.xml): a floor,
+a light, a table and a mocap body around the arm's <include>, and in an included file the weld that
+holds the hand to the mocap body."""
+
+TASK_SHARED = '<mujoco><equality><weld body1="mocap0" body2="right_hand"/></equality></mujoco>\n'
 
 
-def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
+def _task_scene(write: Callable[[str, str], Path]) -> Path:
+    write("robots/task_arm.xml", ARM_ALONE)
+    write("robots/task_shared.xml", TASK_SHARED)
+    return write("robots/reach.xml", TASK_SCENE)
+
+
+def test_a_task_scene_is_cut_down_to_its_robot_by_the_fixes_new_writes(
     write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
 ) -> None:
-    model = write("robots/scene.xml", SCENE)
-    spec = model.with_name("scene.yaml")
-    assert _new(model, spec) == 1
-    out, err = capsys.readouterr()
-    assert out == f"wrote {spec}: robot Twolink; it does not build as written:\n"
-    line = spec.read_text().splitlines().index(f"mjcf: {model.name}") + 1
-    assert err.splitlines() == [
-        f"{spec}:{line}:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
-        "wrap the parts in one root body"
+    model = _task_scene(write)
+    before = {path: path.read_bytes() for path in model.parent.glob("*.xml")}
+    spec = model.with_name("reach.yaml")
+    assert _new(model, spec) == 0, capsys.readouterr().err
+    fixes = yaml.safe_load(spec.read_text())["mjcf_fixes"]
+    assert [(fix["element"], fix["where"]) for fix in fixes] == [
+        ("geom", {"name": "floor0"}),
+        ("light", {"name": "light0"}),
+        ("body", {"name": "mocap0"}),
+        ("body", {"name": "table0"}),
+        ("weld", {"body1": "mocap0"}),
+        ("framepos", {"name": "target_pos"}),
     ]
-    assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()
+    assert all(fix["delete"] is True and fix["why"] for fix in fixes)
+    text = spec.read_text()
+    for comment in (
+        "  # geom floor0 (reach.xml:13), beside the robot in <worldbody>",
+        "  # body mocap0 (reach.xml:15), beside the robot in <worldbody>",
+        "  # unnamed weld in <equality> (task_shared.xml:1)",
+    ):
+        assert comment in text
+    (cls,) = register_specs(spec)
+    robot = assembler.create_robot(cls.__name__, idn=0).get_model()
+    alone = mujoco.MjModel.from_xml_string(TWO_LINK_MJCF)
+    assert [robot.body(b).name for b in range(robot.nbody)] == [
+        "world",
+        *("robot0_" + alone.body(b).name for b in range(1, alone.nbody)),
+    ]
+    assert (robot.neq, robot.nmocap, robot.nsensor, robot.nlight) == (0, 0, 0, 0)
+    assert {path: path.read_bytes() for path in model.parent.glob("*.xml")} == before
+
+
+def test_a_scene_element_no_selection_picks_out_alone_is_named_for_the_user(
+    write: Callable[[str, str], Path],
+) -> None:
+    twin = '<body name="table0" pos="1 0 0.2">'
+    model = _task_scene(write)
+    # an unnamed world geom written exactly as a geom of the arm: deleting it would delete the arm's
+    model.write_text(model.read_text().replace(twin, '<geom type="cylinder" size="0.05 0.05"/>\n    ' + twin))
+    write("robots/task_arm.xml", ARM_ALONE.replace('name="base_col" ', ""))
+    spec = model.with_name("reach.yaml")
+    assert _new(model, spec) == 0
+    assert (
+        "# decide: unnamed geom (reach.xml:17) should go too, but no where: selects them" in spec.read_text()
+    )
+
+
+def test_a_hand_placed_in_a_scene_is_reset_to_the_arm_it_is_mounted_on(
+    write: Callable[[str, str], Path],
+) -> None:
+    far = TWO_LINK_MJCF.replace('<body name="base" pos="0 0 0.1">', '<body name="base" pos="1 1.25 0.15">')
+    model = write("hands/reach_hand.xml", far)
+    spec = model.with_name("reach_hand.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["root_pose"] == "reset"
+    assert "# guess: the file places the root body base 1.61 m from the origin" in spec.read_text()
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_gripper(cls.__name__, idn=0).compile_alone()
+    assert np.allclose(compiled.body("gripper0_base").pos, 0)
 
 
 def test_a_name_a_registered_spec_has_is_not_taken_again(write: Callable[[str, str], Path]) -> None:
