@@ -23,8 +23,9 @@ import mujoco
 def _packages(text: str) -> str:
     for folder in filter(None, os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep)):
         for package in set(re.findall(r"package://([^/]+)/", text)):
-            if (Path(folder) / package).is_dir():
-                text = text.replace(f"package://{package}/", f"{Path(folder) / package}/")
+            root = Path(folder) if Path(folder).name == package else Path(folder) / package
+            if root.is_dir():  # an entry is the package itself or holds it (as ROS reads it)
+                text = text.replace(f"package://{package}/", f"{root}/")
     return text
 
 

@@ -4,6 +4,7 @@ are in tests/corpus."""
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -15,7 +16,7 @@ import yaml
 import assembler
 from assembler.cli import main
 from assembler.registry.catalog import register_specs
-from tests.conftest import TWO_LINK_MJCF
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
 NO_ACTUATORS = TWO_LINK_MJCF.split("  <actuator>")[0] + "</mujoco>\n"
 """The two-link arm without its actuators (as dm_control's Jaco arm comes)."""
@@ -271,3 +272,48 @@ def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
     motors = [compiled.actuator(a).name for a in range(compiled.nu)]
     assert motors == ["robot0_joint1", "robot0_left_finger_joint"]
     assert compiled.actuator("robot0_joint1").ctrlrange.tolist() == [-40.0, 40.0]  # the URDF's effort
+
+
+MESH_URDF = MIMIC_URDF.replace(
+    '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>',
+    '<collision><geometry><mesh filename="package://arm_description/meshes/tet.obj"/></geometry></collision>',
+)
+"""The arm with a mesh named through a ROS package that no package root holds (pybullet's xArm6)."""
+
+
+def test_a_package_beside_the_urdf_is_declared_beside_the_spec_new_writes(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    write("robots/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ)
+    model = write("robots/pincer_arm.urdf", MESH_URDF)
+    spec = model.with_name("pincer_arm.yaml")
+    assert _new(model, spec) == 0
+    marker = model.with_name("robot-assembler.toml")
+    assert capsys.readouterr().out.startswith(
+        f"wrote {spec}: robot PincerArm and {marker} (validated and compiled)"
+    )
+    assert marker.read_text().splitlines()[-1] == 'packages = ["arm_description"]'
+    (cls,) = register_specs(spec)
+    assert assembler.create_robot(cls.__name__).get_model().nmesh == 1  # found without ROS_PACKAGE_PATH
+
+
+def test_a_package_beside_a_urdf_in_a_spec_repository_is_the_entry_to_add_to_it(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    declaration = write("lab/robot-assembler.toml", 'allow = ["vendor"]\n')
+    write("lab/vendor/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ)
+    model = write("lab/vendor/pincer_arm.urdf", MESH_URDF)
+    spec = declaration.parent / "specs" / "pincer_arm.yaml"
+    spec.parent.mkdir()
+    assert _new(model, spec) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[1] == (
+        f"to do: package://arm_description is the folder {model.parent / 'arm_description'} beside the URDF: "
+        f'add "vendor/arm_description" to packages in {declaration}'
+    )
+    assert "ROS_PACKAGE_PATH" not in os.environ  # new found it for its own check only
+    declaration.write_text('allow = ["vendor"]\npackages = ["vendor/arm_description"]\n')  # as it says
+    (cls,) = register_specs(spec)
+    assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
