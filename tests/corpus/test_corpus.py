@@ -28,8 +28,11 @@ pytestmark = pytest.mark.corpus
 
 CONVENTIONS = {
     "names": "every element of ours carries the part's prefix (robot0_, gripper0_)",
-    "collision colour": "group-0 (collision) geoms are drawn in robosuite's green, their material cleared "
-    "(models/part.py); their colour is not compared",
+    "collision colour": "group-0 (collision) geoms keep the file's colour in the specs new writes "
+    "(collision_colour: file) and are drawn in robosuite's green inside robosuite; their colour is not compared",
+    "task scenes": "a task scene is compared as the robot alone: MuJoCo's load of the file with the scene "
+    "deleted through MjSpec (direct_load.robot_alone), not through the spec's mjcf_fixes",
+    "size": "MuJoCo's attach keeps the assembly's <size> and warns (the Shadow hand's nuser_*, njmax)",
     "URDF visual geoms": "a URDF's <visual> geoms are kept in group 1 without contacts, as robosuite "
     "expects; MuJoCo's import puts them in group 0 with contacts: their group is not compared",
     "actuators": "the motors `assembler new` adds to a file without actuators are not in the vendor's file",
