@@ -28,7 +28,8 @@ from assembler.tools.new.xml_files import XmlFiles
 
 WORLD_CHILD_WHY: dict[str, str] = {
     "body": "a body of the task scene beside the robot (a table, a target, a floor marker)",
-    "geom": "a geom of the task scene's world (its floor), which would stay in every world the robot enters",
+    "geom": "a geom fixed in the task scene's world (a floor, a wall), which would stay in every world the "
+    "robot enters; drop this deletion if the geom is the robot's fixed base",
     "site": "a site of the task scene's world (a target marker)",
     "light": "the task scene's light; the worlds the robot enters light themselves",
     "camera": "the task scene's camera; the worlds the robot enters bring their own",
