@@ -9,8 +9,8 @@ every element elsewhere that names something deleted (:mod:`assembler.tools.new.
 
 The file is read as MuJoCo reads it: included files are expanded where they stand, and the
 fixes are written to select in the main file and its included files alike, as ``mjcf_fixes`` applies
-them. A deletion selects its element by name, else by all of its attributes, and only when that
-selects nothing the robot keeps; an element no selection picks out alone is named, not deleted.
+them. A deletion selects its element by name, else by the fewest of its attributes that select it
+alone, and never anything the robot keeps; an element no selection picks out so is named, not deleted.
 """
 
 from __future__ import annotations
