@@ -15,6 +15,7 @@ import yaml
 
 import assembler
 from assembler.cli import main
+from assembler.files.paths import allowing
 from assembler.registry.catalog import register_specs
 from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
@@ -317,3 +318,24 @@ def test_a_package_beside_a_urdf_in_a_spec_repository_is_the_entry_to_add_to_it(
     declaration.write_text('allow = ["vendor"]\npackages = ["vendor/arm_description"]\n')  # as it says
     (cls,) = register_specs(spec)
     assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
+
+
+def test_a_package_beside_a_urdf_no_declaration_can_name_is_the_ros_package_path_to_export(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    folder = write("vendor/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ).parents[1]
+    model = write("vendor/pincer_arm.urdf", MESH_URDF)
+    spec = write("lab/keep.txt", "").with_name("pincer_arm.yaml")  # outside the URDF's folders, as pybullet's
+    assert main(["--allow-path", str(model.parent), "new", str(model), "-o", str(spec)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[1:] == [
+        f"to do: package://arm_description is the folder {folder} beside the URDF: set ROS_PACKAGE_PATH to "
+        "hold it (a spec repository may name only folders inside it)",
+        f"  export ROS_PACKAGE_PATH={folder}",
+    ]
+    assert not spec.with_name("robot-assembler.toml").exists() and "ROS_PACKAGE_PATH" not in os.environ
+    monkeypatch.setenv("ROS_PACKAGE_PATH", str(folder))  # as printed
+    with allowing([model.parent]):
+        (cls,) = register_specs(spec)
+        assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
