@@ -56,9 +56,8 @@ class Case:
 
 ATTACH_CONFLICT = "Attach conflict when attaching"
 SIZE_KEPT = (
-    "the hand's shared.xml sets <size> (njmax, nconmax, nuser_*); MuJoCo's attach keeps the world's sizes "
-    "and says so (MuJoCo's warning, passed on as a UserWarning): the hand's user-data columns are not "
-    "carried into the assembly"
+    "the hand's shared.xml sets <size> njmax and nconmax; MuJoCo's attach keeps the world's memory sizes "
+    "and says so (MuJoCo's warning, passed on as a UserWarning); its user-data columns (nuser_*) are kept"
 )
 
 CASES: tuple[Case, ...] = (

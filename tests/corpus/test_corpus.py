@@ -32,7 +32,7 @@ CONVENTIONS = {
     "(collision_colour: file) and are drawn in robosuite's green inside robosuite; their colour is not compared",
     "task scenes": "a task scene is compared as the robot alone: MuJoCo's load of the file with the scene "
     "deleted through MjSpec (direct_load.robot_alone), not through the spec's mjcf_fixes",
-    "size": "MuJoCo's attach keeps the assembly's <size> and warns (the Shadow hand's nuser_*, njmax)",
+    "size": "MuJoCo's attach keeps the assembly's memory sizes and warns (the Shadow hand's njmax, nconmax)",
     "URDF visual geoms": "a URDF's <visual> geoms are kept in group 1 without contacts, as robosuite "
     "expects; MuJoCo's import puts them in group 0 with contacts: their group is not compared",
     "actuators": "the motors `assembler new` adds to a file without actuators are not in the vendor's file",
@@ -120,10 +120,10 @@ def test_the_build_equals_mujocos_direct_load_of_the_vendors_file(case: Case, co
     root_name = theirs.body(1).name
     ours_pose, theirs_pose = _pose(ours, ours.body(prefix + root_name).id), _pose(theirs, 1)
     colours = part.spec.source_field == "mjcf"
-    counts = ("nbody", "njnt", "ngeom", "nsite", "neq", "ntendon", "nsensor")
+    counts = ("nbody", "njnt", "ngeom", "nsite", "neq", "ntendon", "nsensor", "nuser_actuator", "nuser_jnt")
     assert [getattr(ours, n) for n in counts] == [
         getattr(theirs, n) for n in counts
-    ]  # nothing more, nothing less
+    ]  # nothing more, nothing less, and every user-data column
     for body in range(1, theirs.nbody):
         name = theirs.body(body).name
         mine = ours.body(prefix + name).id
