@@ -32,8 +32,8 @@ from typing import Any
 import mujoco
 
 from assembler.build.load_model import assembly_request
+from assembler.build.lookup import entry_key
 from assembler.build.repeat import KeyedRequest, record_of, recorded_model, recorded_xml
-from assembler.build.service import entry_key
 from assembler.cache.requests import RequestRecord
 from assembler.files.bundles import save_model
 from assembler.mjcf.keyframe import Keyframe
