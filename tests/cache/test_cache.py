@@ -462,7 +462,7 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         edit(package / "meshes" / "tet.obj", TETRAHEDRON_OBJ, 3600)
         edit(package / "robot.xml", MESH_ARM_MJCF.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
-            "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "
+            "import sys, assembler, assembler.build.service; (cls,) = assembler.register_specs(sys.argv[1]); "
             "m = assembler.assemble(cls.__name__).get_model(); assembler.build.service.wait_for_writes(); "
             "print(m.geom('robot0_base_col').size[0])"
         )
