@@ -70,7 +70,11 @@ class LookupCounts:
     """Answered from the cache."""
 
     misses: int = 0
-    """Compiled, then stored."""
+    """Not in the cache: compiled (or patched), then stored."""
+
+    patched: int = 0
+    """Of the misses, those answered by patching the cached model of the robot without its overrides
+    (:mod:`assembler.build.patched`) rather than compiled."""
 
     bypassed: int = 0
     """Compiled without looking: cache disabled, or a part the key cannot describe."""
@@ -102,9 +106,10 @@ def wait_for_writes() -> None:
     wait_for_fillers()
 
 
-def load_entry(key: str) -> mujoco.MjModel | None:
-    """The model stored under ``key`` if its files are unchanged (a hit, counted), else None; a
-    model loaded before in this process is copied from memory (:mod:`assembler.cache.memory`)."""
+def load_entry(key: str, counted: bool = True) -> mujoco.MjModel | None:
+    """The model stored under ``key`` if its files are unchanged (a hit, counted unless ``counted``
+    is False), else None; a model loaded before in this process is copied from memory
+    (:mod:`assembler.cache.memory`). The model returned is the caller's own to change."""
     models = default_store()
     place = (str(models.directory), key)
     model = _recent.get(place)
@@ -112,7 +117,7 @@ def load_entry(key: str) -> mujoco.MjModel | None:
         models.wait_for(key)
         found = models.load(key)
         model = _recent.offer(place, *found) if found is not None else None
-    if model is not None:
+    if model is not None and counted:
         counts.hits += 1
     return model
 
@@ -146,10 +151,16 @@ def entry_key(inputs: BuildInputs, cache: bool = True) -> str | None:
 
 
 def compile_model(
-    key: str | None, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+    key: str | None,
+    build: Callable[[], Assembly],
+    cache: bool = True,
+    store: bool = True,
+    patched: Callable[[], CompiledModel | None] | None = None,
 ) -> CompiledModel:
     """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
-    compiled and (with ``store``) kept for next time; with no key, compiled every time."""
+    compiled and (with ``store``) kept for next time; with no key, compiled every time. On a miss,
+    ``patched()`` is asked first: a model it returns (made without a compile, kept by it) is the
+    answer."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)
@@ -159,6 +170,10 @@ def compile_model(
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
+    answer = patched() if patched is not None else None
+    if answer is not None:
+        counts.patched += 1
+        return answer
     assembly = _built(build)
     recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
