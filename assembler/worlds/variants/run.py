@@ -1,6 +1,8 @@
 """Building the variants of a plan into a folder, in parallel, with a manifest that never lies.
 
-Every variant is compiled before its file is written (atomically); ``manifest.jsonl`` lists the
+Every variant is a model MuJoCo accepts before its file is written (atomically): either compiled,
+or (most sweeps) written as an edit of the robot's XML, compiled once per process
+(:mod:`~assembler.worlds.variants.patched` says how that keeps the guarantee); ``manifest.jsonl`` lists the
 written ones (index, file, sha256, overrides). The folder's previous manifest is removed before
 anything is written and the new one is written once, at the end or when the run is interrupted,
 listing only files this run wrote whole: at no moment does a manifest name a file that is not
@@ -12,6 +14,7 @@ dies, so a killed run leaves no orphans.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -28,6 +31,8 @@ from assembler.errors import AssemblerError, Problem
 from assembler.files.writing import cannot_write, make_folder, write_atomically
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
+from assembler.spec.documents import parse_overrides
+from assembler.worlds.variants.patched import PatchedXml
 from assembler.worlds.variants.plan import VariantPlan
 
 MANIFEST = "manifest.jsonl"
@@ -81,9 +86,55 @@ class VariantRun:
         return len({result.sha256 for result in self.written})
 
 
+@dataclass
+class WrittenCounts:
+    """How this process's variants were made, for tests and the benchmark."""
+
+    edited: int = 0
+    """Written as the robot's XML with the variant's values (no compile of their own)."""
+
+    compiled: int = 0
+    """Built and compiled in full (a structural change, ``bodies:`` scales, ``--cache``)."""
+
+
+counts = WrittenCounts()
+
+
+@dataclass
+class _Patcher:
+    """This process's :class:`PatchedXml` of the plan being run (one plan at a time)."""
+
+    plan: VariantPlan | None = None
+    patched: PatchedXml | None = None
+
+    def of(self, plan: VariantPlan, meshes: bool) -> PatchedXml | None:
+        """The plan's robot compiled once, or None when its variants are compiled (``--cache`` keeps
+        each variant's compiled model, so those are compiled)."""
+        if plan.store:
+            return None
+        if self.plan != plan:
+            fixed = parse_overrides(plan.fixed, "--set ")
+            grippers = dict(plan.grippers)
+            meshes = plan.cache and meshes
+            self.plan, self.patched = plan, None
+            with contextlib.suppress(AssemblerError):  # the robot alone fails: each variant says why
+                self.patched = PatchedXml.of(plan.robot, plan.idn, plan.base, grippers, fixed, meshes)
+        return self.patched
+
+
+_patcher = _Patcher()
+
+
 def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True) -> str:
-    """The compiled, emitted MJCF of one variant (nothing written); ``meshes`` False reads meshes
+    """The emitted MJCF of one variant (nothing written): the robot's XML with the variant's values
+    when a patch describes the variant, else compiled and emitted; ``meshes`` False reads meshes
     from their files (see :data:`FROM_FILES_AT`)."""
+    patched = _patcher.of(plan, meshes)
+    xml = patched.xml(plan.overrides(variant)) if patched is not None else None
+    if xml is not None:
+        counts.edited += 1
+        return xml
+    counts.compiled += 1
     robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=plan.overrides(variant))
     return robot.get_xml(cache=plan.cache, store=plan.store, meshes=meshes)
 
