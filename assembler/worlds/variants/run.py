@@ -102,9 +102,10 @@ counts = WrittenCounts()
 
 @dataclass
 class _Patcher:
-    """This process's :class:`PatchedXml` of the plan being run (one plan at a time)."""
+    """This process's :class:`PatchedXml` of the robot being varied (one at a time): made once for
+    every plan that varies the same robot with the same ``--set`` overrides."""
 
-    plan: VariantPlan | None = None
+    robot: tuple[Any, ...] | None = None
     patched: PatchedXml | None = None
 
     def of(self, plan: VariantPlan, meshes: bool) -> PatchedXml | None:
@@ -112,13 +113,15 @@ class _Patcher:
         each variant's compiled model, so those are compiled)."""
         if plan.store:
             return None
-        if self.plan != plan:
+        meshes = plan.cache and meshes
+        robot = (plan.robot, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
+        if self.robot != robot:
+            self.robot, self.patched = robot, None
             fixed = parse_overrides(plan.fixed, "--set ")
-            grippers = dict(plan.grippers)
-            meshes = plan.cache and meshes
-            self.plan, self.patched = plan, None
             with contextlib.suppress(AssemblerError):  # the robot alone fails: each variant says why
-                self.patched = PatchedXml.of(plan.robot, plan.idn, plan.base, grippers, fixed, meshes)
+                self.patched = PatchedXml.of(
+                    plan.robot, plan.idn, plan.base, dict(plan.grippers), fixed, meshes
+                )
         return self.patched
 
 
