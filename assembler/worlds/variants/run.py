@@ -31,6 +31,7 @@ from assembler.errors import AssemblerError, Problem
 from assembler.files.writing import cannot_write, make_folder, write_atomically
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
+from assembler.registry.lookup import robot_class
 from assembler.spec.documents import parse_overrides
 from assembler.worlds.variants.patched import PatchedXml
 from assembler.worlds.variants.plan import VariantPlan
@@ -114,7 +115,8 @@ class _Patcher:
         if plan.store:
             return None
         meshes = plan.cache and meshes
-        robot = (plan.robot, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
+        cls = robot_class(plan.robot)  # the class registered now: a spec registered again is another
+        robot = (cls, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
         if self.robot != robot:
             self.robot, self.patched = robot, None
             fixed = parse_overrides(plan.fixed, "--set ")
