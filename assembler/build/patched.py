@@ -13,11 +13,12 @@ Anything a patch cannot do (a structural override, ``set_joint_attribute`` edits
 not in the cache) is compiled as before; the reason is logged at DEBUG level on the
 ``assembler.build.patched`` logger, never warned: a compile is the normal answer, not a problem.
 
-The patched model is stored under the variant's own cache key (unless ``store=False``), with the
-files of the entry it was patched from (the same files: an override that names another file is
-structural). So the next request for the same variant, in this or another process, is a plain
-cache hit, answered from its request record without reading the specs, as any robot's is. The
-entry holds the patched model, which equals the compiled one within 1e-10, not bit for bit.
+A patched model is not stored as a cache entry of its own, whatever ``store`` says: patching it
+again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU against ~0.1 s for
+the load, measured under load), while storing it costs more than the patch (serialising a Panda's
+44 MB model, mostly its meshes, took 0.17 s of CPU, plus the write) and each such entry would push
+the plain robot's entry, the one every variant needs, out of the bounded cache. A variant asked
+for again is patched again from the plain robot's entry, which each use keeps recent.
 """
 
 from __future__ import annotations
@@ -26,11 +27,9 @@ import logging
 from dataclasses import replace
 
 from assembler.build.derived import apply_patch
-from assembler.build.patch_inputs import Resolved
+from assembler.build.patch_inputs import Resolved, resolve_spec
 from assembler.build.patchable import NotPatchable, model_patch
-from assembler.build.service import CompiledModel, default_store, entry_key, load_entry
-from assembler.cache.dependencies import Dependency, Recorder, verify
-from assembler.cache.file_state import Stat
+from assembler.build.service import CompiledModel, entry_key, load_entry
 from assembler.mjcf.keyframe import Keyframe
 from assembler.models import RobotModel
 from assembler.registry.catalog import applied_overrides
@@ -55,32 +54,18 @@ def _refusal(robot: RobotModel) -> str | None:
     return None
 
 
-def _known_digests(dependencies: list[Dependency]) -> dict[str, Dependency]:
-    return {state.path: state for state in dependencies if not state.racy}
+def _tables(plain: RobotModel, robot: RobotModel) -> tuple[Resolved, Resolved]:
+    """The resolved tables of ``plain`` and of ``robot`` (its overrides): the variant's resolved
+    against the plain robot's MJCF when its overrides touch only light sections (its own MJCF is
+    then not read)."""
+    resolved = Resolved.of(plain)
+    light = resolve_spec(plain, resolved, robot.spec, applied_overrides(type(robot)))
+    return resolved, light if light is not None else Resolved.of(robot)
 
 
-def _store(key: str, robot: RobotModel, patched: CompiledModel, base_key: str) -> None:
-    """Keep ``patched`` under ``key`` with the files of the entry ``base_key`` it came from."""
-    store = default_store()
-    entry = store.entry(base_key)
-    current = verify(entry.dependencies) if entry is not None else None
-    if entry is None or current is None:
-        return  # the plain robot's entry went or its files changed meanwhile: nothing is kept
-    known = _known_digests(current)
-
-    def digest(path: str, stat: Stat) -> str | None:
-        state = known.get(path)
-        return state.digest if state is not None and state.stat == stat else None
-
-    earlier = {path: (size, mtime) for path, size, mtime in robot.source.files}
-    recorder = Recorder([state.path for state in current], earlier, digest)
-    label = " + ".join(part.name for part in [robot, *robot.models]) + f" (patched from {entry.label})"
-    store.save(key, patched.model, recorder, label)
-
-
-def patched_variant(robot: RobotModel, key: str, store: bool = True) -> CompiledModel | None:
-    """``robot``'s model patched from the cached model of its plain robot (see the module), kept under
-    ``key`` (its own entry) with ``store``; None, with the reason logged, when it must be compiled."""
+def patched_variant(robot: RobotModel) -> CompiledModel | None:
+    """``robot``'s model patched from the cached model of its plain robot (see the module); None,
+    with the reason logged, when it must be compiled."""
     reason = _refusal(robot)
     if reason is not None:
         LOG.debug("%s compiled: %s", robot.name, reason)
@@ -92,13 +77,10 @@ def patched_variant(robot: RobotModel, key: str, store: bool = True) -> Compiled
         LOG.debug("%s compiled: the robot without its overrides is not in the model cache", robot.name)
         return None
     try:
-        patch = model_patch(model, Resolved.of(plain), Resolved.of(robot))
+        patch = model_patch(model, *_tables(plain, robot))
     except NotPatchable as error:
         LOG.debug("%s compiled: %s", robot.name, error)
         return None
     apply_patch(model, patch)  # load_entry's model is this caller's own (a copy when kept in memory)
-    patched = CompiledModel(model, Keyframe.of(model))
-    if store:
-        _store(key, robot, patched, base_key)
     LOG.debug("%s patched from its plain robot's cached model: %s", robot.name, ", ".join(patch.fields))
-    return patched
+    return CompiledModel(model, Keyframe.of(model))

@@ -159,8 +159,8 @@ def compile_model(
 ) -> CompiledModel:
     """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
     compiled and (with ``store``) kept for next time; with no key, compiled every time. On a miss,
-    ``patched()`` is asked first: a model it returns (made without a compile, kept by it) is the
-    answer."""
+    ``patched()`` is asked first: a model it returns (made without a compile) is the answer, and
+    is not stored (see :mod:`assembler.build.patched` for why)."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)

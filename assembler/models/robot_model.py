@@ -239,17 +239,17 @@ class RobotModel(PlacedPart):
         if self._mjspec is not None:
             return compile_home(self._mjspec, self.assembly_home(), self.describe(), meshes=cache)
         self.entry_key = key = entry_key(self.build_inputs(), cache)
-        patched = (lambda: self._patched(key, store)) if key is not None else None
+        patched = self._patched if key is not None else None
         compiled = compile_model(key, self._assembly, cache=cache, store=store, patched=patched)
         self._keyframe = compiled.keyframe
         return compiled.model
 
-    def _patched(self, key: str, store: bool) -> CompiledModel | None:
+    def _patched(self) -> CompiledModel | None:
         """On a cache miss: this robot patched from the cached model of the robot without its
-        overrides, or None to compile (:mod:`assembler.build.patched`, which reads the model
-        classes, hence imported late)."""
+        overrides (not stored), or None to compile (:mod:`assembler.build.patched`, which reads the
+        model classes, hence imported late)."""
         patched = importlib.import_module("assembler.build.patched")
-        answer: CompiledModel | None = patched.patched_variant(self, key, store)
+        answer: CompiledModel | None = patched.patched_variant(self)
         return answer
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:

@@ -75,32 +75,23 @@ def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
     assert _differences(model, compiled) == []
 
 
-def test_a_patched_variant_is_kept_and_asked_again_is_a_plain_cache_hit(
-    monkeypatch: pytest.MonkeyPatch,
+def test_a_patched_variant_is_not_stored_and_asked_again_is_patched_again(
+    private_cache: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     overrides = {"joint_defaults.frictionloss": 0.07}
     assembler.assemble("Sparrow7").get_model()
     wait_for_writes()
+    entries = sorted(private_cache.glob("*.mjb"))
     first = assembler.assemble("Sparrow7", overrides=overrides).get_model()
     wait_for_writes()
-    hits, patched = service.counts.hits, service.counts.patched
+    assert sorted(private_cache.glob("*.mjb")) == entries  # only the plain robot's entry
+    patched = service.counts.patched
     with monkeypatch.context() as tripwire:
         _no_compile(tripwire)
         again = assembler.assemble("Sparrow7", overrides=overrides).get_model()
-    assert (service.counts.hits, service.counts.patched) == (hits + 1, patched)
+    assert service.counts.patched == patched + 1
     assert np.array_equal(again.dof_frictionloss, first.dof_frictionloss)
     assert again.joint("robot0_joint2").frictionloss[0] == pytest.approx(0.07)
-
-
-def test_a_variant_with_store_false_is_patched_and_not_kept() -> None:
-    assembler.assemble("Sparrow7").get_model()
-    wait_for_writes()
-    overrides = {"joint_defaults.damping": 0.45}
-    assembler.assemble("Sparrow7", overrides=overrides).get_model(store=False)
-    wait_for_writes()
-    patched, misses = service.counts.patched, service.counts.misses
-    assembler.assemble("Sparrow7", overrides=overrides).get_model(store=False)
-    assert (service.counts.patched, service.counts.misses) == (patched + 1, misses + 1)
 
 
 def test_a_structural_override_is_compiled_and_the_reason_is_logged(
