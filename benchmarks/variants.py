@@ -83,8 +83,8 @@ def _patched(name: str, value: float, env: dict[str, str]) -> Run:
 
 def patched_variant(name: str, xml_file: Path, scratch: Path, repeats: int) -> list[Figure]:
     """A new variant of a cached robot through the API (patched), against MuJoCo compiling
-    robosuite's XML file, each in a new process; a new frictionloss value each run, so each is a
-    miss of its own entry (then kept there, as the API does: the process waits for that write)."""
+    robosuite's XML file, each in a new process; a new frictionloss value each run (a patched
+    variant is not stored, so a repeated value would be patched again all the same)."""
     warm = _cache(scratch / f"p-{name}")
     run_python("import assembler", f"assembler.assemble({name!r}).get_model()", warm)
     results = _interleave(
