@@ -364,3 +364,11 @@ def test_a_value_mujoco_refuses_is_refused_before_writing_and_the_edited_text_wo
     )
     with pytest.raises(ValueError):
         mujoco.MjModel.from_xml_string(text)
+
+
+def test_a_grid_of_joint_values_is_written_in_this_process_by_default(tmp_path: Path) -> None:
+    edited = variant_counts.edited
+    plan = VariantPlan("Sparrow7", grids=(Grid.parse("joint_defaults.frictionloss=0.1,0.2,0.3"),))
+    run = write_variants(plan, tmp_path / "out")
+    assert len(run.written) == 3 and run.distinct == 3
+    assert variant_counts.edited == edited + 3  # here, not in worker processes

@@ -57,6 +57,9 @@ WRITTEN = {*JOINT_ATTRIBUTES, *ACTUATOR_ATTRIBUTES, "geom_friction", "key_qpos"}
 """The model fields a patch may write for the variant to be written as edited text."""
 
 
+TEXT_SECTIONS = frozenset({"joint_defaults", "joints", "actuators", "geoms", "init_qpos"})
+"""Spec fields whose changes are written as edits of the text (when the patch has no structural change)."""
+
 Edits = dict[tuple[str, str], dict[str, str]]
 
 

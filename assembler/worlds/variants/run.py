@@ -33,7 +33,7 @@ from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import parse_overrides
-from assembler.worlds.variants.patched import PatchedXml
+from assembler.worlds.variants.patched import TEXT_SECTIONS, PatchedXml
 from assembler.worlds.variants.plan import VariantPlan
 
 MANIFEST = "manifest.jsonl"
@@ -130,6 +130,12 @@ class _Patcher:
 _patcher = _Patcher()
 
 
+def edited_by_text(plan: VariantPlan) -> bool:
+    """True when every field ``plan`` varies is one the robot's XML is edited for (no variant of
+    its own compiled), unless a value turns out structural (see :mod:`.patched`)."""
+    return not plan.store and all(key.split(".")[0].split("[")[0] in TEXT_SECTIONS for key in plan.varied())
+
+
 def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True) -> str:
     """The emitted MJCF of one variant (nothing written): the robot's XML with the variant's values
     when a patch describes the variant, else compiled and emitted; ``meshes`` False reads meshes
@@ -211,6 +217,8 @@ def run_variants(plan: VariantPlan, folder: str | Path) -> list[VariantResult]:
         (target / MANIFEST).unlink(missing_ok=True)  # the earlier run's: its files are about to change
     variants = plan.variant_overrides()
     workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(variants)))
+    if plan.jobs is None and edited_by_text(plan):
+        workers = 1  # each variant costs milliseconds; a worker's own compile of the robot costs more
     from_store = len(variants) < FROM_FILES_AT * workers
     work = [(plan, index, variant, target, from_store) for index, variant in enumerate(variants)]
     results: list[VariantResult] = []
