@@ -224,6 +224,7 @@ def main() -> None:
         for figure in [
             *patched_variant(args.robot, xml_file, scratch, args.repeats),
             *per_variant(args.robot, args.count, scratch, args.repeats),
+            *jobs(args.robot, args.count, scratch, args.repeats),
         ]:
             print(figure.line(), flush=True)
 
