@@ -40,7 +40,7 @@ def _no_compile(monkeypatch: pytest.MonkeyPatch) -> None:
     def refuse(*_: object) -> None:
         raise AssertionError("compiled or decoded a mesh")
 
-    for name in ("compile_from_store", "compile_spec"):
+    for name in ("compile_from_store", "compile_spec", "compile_with_home"):
         monkeypatch.setattr(f"assembler.build.compile.{name}", refuse)
     monkeypatch.setattr("assembler.cache.mesh_data.decode", refuse)
     monkeypatch.setattr("assembler.cache.mesh_fill.decode", refuse)

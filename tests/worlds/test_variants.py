@@ -15,12 +15,14 @@ import mujoco
 import pytest
 
 import assembler
+from assembler.build.service import wait_for_writes
 from assembler.cli import main
 from assembler.worlds.variants import Grid, VariantPlan, write_variants
 from assembler.worlds.variants.run import counts as variant_counts
 from assembler.worlds.variants.xml_text import XmlText
 from tests.build.test_patchable import CASES, Write, _register_declared
-from tests.build.test_patched_api import _differences
+from tests.build.test_patched_api import _differences, _no_compile
+from tests.conftest import use_private_cache
 
 
 def variants(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
@@ -372,3 +374,18 @@ def test_a_grid_of_joint_values_is_written_in_this_process_by_default(tmp_path: 
     run = write_variants(plan, tmp_path / "out")
     assert len(run.written) == 3 and run.distinct == 3
     assert variant_counts.edited == edited + 3  # here, not in worker processes
+
+
+def test_variants_of_a_robot_whose_model_and_xml_are_cached_compile_nothing(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    use_private_cache(tmp_path / "cache", monkeypatch)
+    assembler.assemble("Finch6").get_xml()  # an entry with the model and its XML, as `build -o` leaves
+    wait_for_writes()
+    overrides = {"joint_defaults.damping": 0.33}
+    compiled = assembler.assemble("Finch6", overrides=overrides).get_model(cache=False, store=False)
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        run = write_variants(_one_variant("Finch6", overrides), tmp_path / "out")
+    written = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / str(run.results[0].file)))
+    assert _differences(written, compiled) == []

@@ -31,6 +31,7 @@ import numpy as np
 from assembler.build.compile import compile_and_emit
 from assembler.build.patch_inputs import Resolved, resolve_variant
 from assembler.build.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.build.service import default_store, entry_key
 from assembler.mjcf.keyframe import HOME_KEY, home_control
 from assembler.models import RobotModel
 from assembler.registry.instances import assemble
@@ -83,12 +84,20 @@ class PatchedXml:
         base: str | None,
         grippers: Mapping[str, str | None],
         fixed: Sequence[Override],
+        cache: bool,
         meshes: bool,
     ) -> PatchedXml:
-        """The robot with the ``fixed`` overrides, compiled once (meshes from the mesh store unless
-        ``meshes`` is False)."""
+        """The robot with the ``fixed`` overrides: its model and XML from the compiled-model cache
+        when an entry holds both (``cache``), else compiled once (meshes from the mesh store unless
+        ``meshes`` is False); nothing is stored."""
         made = assemble(robot, idn, base, grippers, list(fixed))
-        model, xml = compile_and_emit(made.mjspec, made.assembly_home(), made.describe(), meshes=meshes)
+        key = entry_key(made.build_inputs(), cache)
+        entry = default_store().entry(key) if key is not None else None
+        if entry is not None and entry.xml:  # both are checked against their files as they load
+            xml = made.get_xml(cache=True, store=False, meshes=meshes)
+            model = made.get_model(cache=True, store=False)
+        else:
+            model, xml = compile_and_emit(made.mjspec, made.assembly_home(), made.describe(), meshes=meshes)
         return cls(made, Resolved.of(made), model, XmlText(xml), grippers, base)
 
     def xml(self, overrides: Sequence[Override]) -> str | None:

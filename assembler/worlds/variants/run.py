@@ -122,7 +122,7 @@ class _Patcher:
             fixed = parse_overrides(plan.fixed, "--set ")
             with contextlib.suppress(AssemblerError):  # the robot alone fails: each variant says why
                 self.patched = PatchedXml.of(
-                    plan.robot, plan.idn, plan.base, dict(plan.grippers), fixed, meshes
+                    plan.robot, plan.idn, plan.base, dict(plan.grippers), fixed, plan.cache, meshes
                 )
         return self.patched
 
