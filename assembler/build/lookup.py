@@ -28,7 +28,11 @@ class LookupCounts:
     """Answered from the cache."""
 
     misses: int = 0
-    """Compiled, then stored."""
+    """Not in the cache: compiled (or patched), then stored."""
+
+    patched: int = 0
+    """Of the misses, those answered by patching the cached model of the robot without its overrides
+    (:mod:`assembler.build.patched`) rather than compiled."""
 
     bypassed: int = 0
     """Compiled without looking: cache disabled, or a part the key cannot describe."""
@@ -46,9 +50,10 @@ def default_store() -> ModelStore:
     return ModelStore(cache_dir(), max_bytes())
 
 
-def load_entry(key: str) -> mujoco.MjModel | None:
-    """The model stored under ``key`` if its files are unchanged (a hit, counted), else None; a
-    model loaded before in this process is copied from memory (:mod:`assembler.cache.memory`)."""
+def load_entry(key: str, counted: bool = True) -> mujoco.MjModel | None:
+    """The model stored under ``key`` if its files are unchanged (a hit, counted unless ``counted``
+    is False), else None; a model loaded before in this process is copied from memory
+    (:mod:`assembler.cache.memory`). The model returned is the caller's own to change."""
     models = default_store()
     place = (str(models.directory), key)
     model = recent.get(place)
@@ -56,7 +61,7 @@ def load_entry(key: str) -> mujoco.MjModel | None:
         models.wait_for(key)
         found = models.load(key)
         model = recent.offer(place, *found) if found is not None else None
-    if model is not None:
+    if model is not None and counted:
         counts.hits += 1
     return model
 

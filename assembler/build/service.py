@@ -101,10 +101,16 @@ def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
 
 
 def compile_model(
-    key: str | None, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+    key: str | None,
+    build: Callable[[], Assembly],
+    cache: bool = True,
+    store: bool = True,
+    patched: Callable[[], CompiledModel | None] | None = None,
 ) -> CompiledModel:
     """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
-    compiled and (with ``store``) kept for next time; with no key, compiled every time."""
+    compiled and (with ``store``) kept for next time; with no key, compiled every time. On a miss,
+    ``patched()`` is asked first: a model it returns (made without a compile) is the answer, and
+    is not stored (see :mod:`assembler.build.patched` for why)."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)
@@ -114,6 +120,10 @@ def compile_model(
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
+    answer = patched() if patched is not None else None
+    if answer is not None:
+        counts.patched += 1
+        return answer
     assembly = _built(build)
     recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)
