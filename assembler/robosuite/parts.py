@@ -2,81 +2,65 @@
 
 robosuite lists each part's elements by name from the file it reads, and the environment looks every
 listed name up in the compiled world. So the file robosuite reads for a gripper or base and the
-assembly our robot builds must name every element alike: each part class has a robosuite variant (an
-unregistered subclass) whose part spec gives unnamed geoms robosuite's names and, for a robot whose
-spec says ``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
-text is the lossless emission, kept in the cache across processes (:func:`.files.kept_file`):
-every hard reset of an environment rebuilds every model, and the text of an unchanged part does not
-change, so a warm ``robosuite.make`` neither builds nor writes any.
+assembly our robot builds must name every element alike: a part made for robosuite
+(:func:`robosuite_part`, an instance of our spec class, no class of its own) has an ``adaptation``
+that gives unnamed geoms robosuite's names and, for a robot whose spec says
+``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
+text is the lossless emission, kept in the cache across processes (:mod:`.files`).
 """
 
 from __future__ import annotations
 
 import warnings
-from collections.abc import Iterator
-from typing import Any, TypeVar
-from xml.sax.saxutils import escape, unescape
+from typing import TypeVar
 
 import mujoco
 
-from assembler.cache.dependencies import asset_files
 from assembler.errors import AssemblerWarning, SpecError
 from assembler.mjcf.inertia_groups import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.models.collision_colour import colour_collision_geoms
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.arm_centers import add_arm_centers
-from assembler.robosuite.conventions import DRIVEN_GROUPS, driven_actuators, robot_type_name
-from assembler.robosuite.files import kept_file, written_file
+from assembler.robosuite.conventions import (
+    ACTUATION,
+    DRIVEN_GROUPS,
+    INERTIA_GROUPS,
+    driven_actuators,
+    robot_type_name,
+)
+from assembler.robosuite.files import robosuite_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
-from assembler.robosuite.lossless import lossless_xml
 from assembler.spec.fieldpath import FieldPath
 
 P = TypeVar("P", bound=PartModel)
 
-ACTUATION = FieldPath(("robosuite", "actuation"))
 JOINT_GROUPS = FieldPath(("joint_groups",))
 
-ROBOSUITE_INERTIA_GROUPS = (0, 0)
-"""The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias."""
 
-NOTE = "<!-- assembler says: "
-"""How a part file carries what its emission found to say (said again on every use of the file)."""
-
-_DASH = {"-": "&#45;"}
-"""A comment cannot hold ``--``: notes are written with every dash as a character reference."""
-
-_variants: dict[type[Any], type[Any]] = {}
+def robosuite_part(cls: type[P], idn: int | str = 0) -> P:
+    """A part of ``cls`` (our spec class) as robosuite's environments see it: an instance whose part
+    spec gets :func:`as_robosuite_sees` (its ``adaptation``), which its cache keys name."""
+    part = cls(idn=idn)
+    part.adaptation = as_robosuite_sees
+    return part
 
 
-def robosuite_variant(cls: type[P]) -> type[P]:
-    """``cls`` as robosuite sees it (made once per class, never registered)."""
-    variant = _variants.get(cls)
-    if variant is None:
-
-        def part_mjspec(self: PartModel) -> mujoco.MjSpec:
-            mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
-            if self.spec.collision_colour != "robosuite":
-                # robosuite's XML layer colours every collision geom itself when it reads a part: given
-                # that colour here, what robosuite reads is what we give (docs/robosuite.md)
-                colour_collision_geoms(mjspec, self.collision_rgba)
-            if isinstance(self, ManipulatorModel):
-                drive_as_declared(self, mjspec)
-                add_arm_centers(self, mjspec)
-            if isinstance(self, GripperModel):
-                add_grip_frames(self, mjspec)
-            return mjspec
-
-        namespace = {
-            "in_registry": False,
-            "part_mjspec": part_mjspec,
-            "__module__": __name__,
-            "__doc__": f"{cls.__name__} as robosuite's environments see it.",
-        }
-        variant = type(cls.__name__, (cls,), namespace)
-        _variants[cls] = variant
-    return variant
+def as_robosuite_sees(part: PartModel, mjspec: mujoco.MjSpec) -> mujoco.MjSpec:
+    """``mjspec`` (``part``'s own spec) with robosuite's geom names and collision colours, a robot's
+    drives as its spec declares them and its arms' centres, a gripper's grip frames."""
+    mjspec = name_geoms_as_robosuite(mjspec)
+    if part.spec.collision_colour != "robosuite":
+        # robosuite's XML layer colours every collision geom itself when it reads a part: given
+        # that colour here, what robosuite reads is what we give (docs/robosuite.md)
+        colour_collision_geoms(mjspec, part.collision_rgba)
+    if isinstance(part, ManipulatorModel):
+        drive_as_declared(part, mjspec)
+        add_arm_centers(part, mjspec)
+    if isinstance(part, GripperModel):
+        add_grip_frames(part, mjspec)
+    return mjspec
 
 
 def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
@@ -129,73 +113,26 @@ def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]
 def part_file(part: PartModel) -> str:
     """The file robosuite reads for ``part`` alone (unprefixed: robosuite prefixes it)."""
     inputs = part.part_inputs()
-
-    def emit() -> str:
-        return lossless_xml(part.part_mjspec())
-
-    if not inputs.spec_made:
-        return written_file(emit())
-    return kept_file(inputs, _files_read([part]), emit, lambda: _read_earlier([part]))
+    return robosuite_file(inputs, inputs.spec_made, [part], part.part_mjspec)
 
 
 def assembly_file(robot: RobotModel) -> str:
-    """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly);
-    what robosuite's world will weigh differently is said on every use (the file carries it)."""
+    """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly)."""
     inputs = robot.build_inputs()
-    parts = [robot, *robot.models]
-
-    def emit() -> str:
-        mjspec = robot.build_mjspec()
-        return _with_notes(lossless_xml(mjspec), _inertia_notes(robot, mjspec))
-
-    path = (
-        kept_file(inputs, _files_read(parts), emit, lambda: _read_earlier(parts))
-        if inputs.cacheable
-        else written_file(emit())
-    )
-    for note in _notes_of(path):
-        warnings.warn(note, AssemblerWarning, stacklevel=2)
-    return path
+    return robosuite_file(inputs, inputs.cacheable, [robot, *robot.models], lambda: _world_checked(robot))
 
 
-def _files_read(parts: list[PartModel]) -> Iterator[str]:
-    """Every file the text of ``parts`` depends on: each part's MJCF and includes, and the asset files
-    its text names (which must still be there). Lazy: a part's MJCF is read only when iterated."""
-    for part in parts:
-        yield from (path for path, _, _ in part.source.files)
-        yield from asset_files(part.prepared_mjspec)
-
-
-def _read_earlier(parts: list[PartModel]) -> dict[str, tuple[int, int]]:
-    """Each part's MJCF and includes with their (size, mtime_ns) when the part read them."""
-    return {path: (size, mtime) for part in parts for path, size, mtime in part.source.files}
-
-
-def _inertia_notes(robot: RobotModel, mjspec: mujoco.MjSpec) -> list[str]:
-    """Where robosuite's world will weigh a body of the assembly ``mjspec`` differently."""
-    bodies = weighed_by_other_groups(mjspec, ROBOSUITE_INERTIA_GROUPS)
-    if not bodies:
-        return []
-    shown = ", ".join(bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4 else "")
-    return [
-        f"{type(robot).__name__}: robosuite's world counts only group-0 geoms in inferred masses "
-        f'(<compiler inertiagrouprange="0 0">), so {shown} weigh less there than in the assembled '
-        "model; give those bodies an <inertial> to make them agree"
-    ]
-
-
-def _with_notes(text: str, notes: list[str]) -> str:
-    """``text`` with one leading comment line per note (XML readers skip comments)."""
-    return "".join(f"{NOTE}{escape(note, _DASH)} -->\n" for note in notes) + text
-
-
-def _notes_of(path: str) -> list[str]:
-    """The notes at the head of a part file."""
-    notes = []
-    with open(path, encoding="utf-8") as file:
-        for line in file:
-            if not line.startswith(NOTE):
-                break
-            note = line.removeprefix(NOTE).removesuffix(" -->\n")
-            notes.append(unescape(note, {v: k for k, v in _DASH.items()}))
-    return notes
+def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
+    """The robot's assembly, said where robosuite's world will weigh some body differently."""
+    mjspec = robot.build_mjspec()
+    bodies = weighed_by_other_groups(mjspec, INERTIA_GROUPS)
+    if bodies:
+        shown = ", ".join(bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4 else "")
+        warnings.warn(
+            f"{type(robot).__name__}: robosuite's world counts only group-0 geoms in inferred masses "
+            f'(<compiler inertiagrouprange="0 0">), so {shown} weigh less there than in the assembled '
+            "model; give those bodies an <inertial> to make them agree",
+            AssemblerWarning,
+            stacklevel=2,
+        )
+    return mjspec
