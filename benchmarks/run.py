@@ -109,7 +109,8 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
     def variant_figures(name: str) -> list[Figure]:
         count = 4 if quick else 16
         per_variant = variants.per_variant(name, count, scratch, repeats)
-        return [*per_variant, *variants.jobs(name, count, scratch, repeats)]
+        patched = variants.patched_variant(name, scratch / f"{name}-robosuite.xml", scratch, repeats)
+        return [*patched, *per_variant, *variants.jobs(name, count, scratch, repeats)]
 
     for name in robosuite:
         guarded(name, lambda name=name: robosuite_robot(name))

@@ -1,62 +1,160 @@
-"""Target 5: variants. Per variant, ours (``write_variants`` with one job: assemble, build, compile
-with stored meshes, emit, write) against robosuite doing the same variants in one process (create
-the robot, set the varied joint damping, ``get_xml``), each in a new process timed inside; and
-robosuite with MuJoCo compiling each XML too, since every one of our variant files is compiled
-before it is written. Then ``assembler variants --jobs 1`` against ``--jobs 2``, whole processes.
+"""Target 5: variants.
+
+- A new variant through the API (issue 27 item 3): ``assemble(name, overrides=...).get_model()``
+  with the robot without overrides cached, so the variant is patched rather than compiled, against
+  MuJoCo compiling robosuite's XML of the same robot; whole process and timed inside, interleaved,
+  with CPU times (target 0.5x).
+- ``write_variants`` per variant: ours (one job: the robot compiled and emitted once, each variant
+  its XML with the variant's values put in, written) against robosuite doing the same variants in
+  one process (create the robot, set the varied joint damping, ``get_xml``), each in a new process
+  timed inside; both as the whole sweep over its count (first costs included) and as the marginal
+  cost of a variant (a sweep of 4N minus a sweep of N, over 3N). Also robosuite with MuJoCo
+  compiling each XML.
+- ``assembler variants --jobs 1`` against ``--jobs 2``, whole processes.
+
+``python -m benchmarks.variants [ROBOT] [--repeats N] [--count N]`` runs these figures alone.
 """
 
 from __future__ import annotations
 
+import argparse
+import tempfile
 from pathlib import Path
 
 from benchmarks.figures import Figure, ratio_figure, seconds_text
-from benchmarks.processes import Run, medians, run_command, run_python
-from benchmarks.whole import ASSEMBLER, _cache
+from benchmarks.processes import Run, compile_bytecode, medians, run_command, run_python
+from benchmarks.whole import ASSEMBLER, _cache, _interleave
+
+PATCHED_TARGET = 0.5
+"""A new variant of a cached robot: at most half of MuJoCo compiling robosuite's XML (issue 27)."""
 
 VARIANT_TARGET = 1.0
 JOBS_TARGET = 1.6
 """Two jobs on two cores: close to twice as fast (the issue's "close to 2x")."""
 
 
-def _values(count: int) -> list[float]:
-    return [round(0.05 + 0.01 * index, 4) for index in range(count)]
+def _values(count: int, first: int = 0) -> list[float]:
+    return [round(0.05 + 0.01 * index, 4) for index in range(first, first + count)]
+
+
+_SECOND = "_second = _t.perf_counter()\n"
+_SECOND_DONE = "out['second'] = _t.perf_counter() - _second\n"
+"""The work's second sweep (same count, other values) is timed alone: the cost of a variant once the
+process has made one (ours: the robot compiled once; robosuite: its first model parsed)."""
 
 
 def _ours(name: str, count: int, folder: Path, env: dict[str, str]) -> Run:
-    grid = "joint_defaults.damping=" + ",".join(str(v) for v in _values(count))
+    # frictionloss on every joint: robosuite's Panda spec sets each joint's damping, so
+    # joint_defaults.damping would change nothing there (robosuite's side sets damping on every joint)
     imports = "from assembler.worlds.variants import Grid, VariantPlan, write_variants"
-    work = (
-        f"write_variants(VariantPlan(robot={name!r}, grids=(Grid.parse({grid!r}),), jobs=1), {str(folder)!r})"
-    )
-    return run_python(imports, work, env)
+    work = ""
+    for sweep, first in enumerate((0, count)):
+        grid = "joint_defaults.frictionloss=" + ",".join(str(v) for v in _values(count, first))
+        plan = f"VariantPlan(robot={name!r}, grids=(Grid.parse({grid!r}),), jobs=1)"
+        work += (_SECOND if sweep else "") + f"write_variants({plan}, {str(folder / str(sweep))!r})\n"
+    return run_python(imports, work + _SECOND_DONE, env)
 
 
 def _robosuite(name: str, count: int, compile_too: bool) -> Run:
     imports = "import numpy as np, mujoco\nfrom tests.parity.robosuite_side import robosuite_robot_model"
+    work = ""
+    for sweep, first in enumerate((0, count)):
+        work += (_SECOND if sweep else "") + (
+            f"for value in {_values(count, first)!r}:\n"
+            f"    robot = robosuite_robot_model({name!r})\n"
+            "    robot.set_joint_attribute('damping', np.full(robot.dof, value))\n"
+            "    xml = robot.get_xml()\n"
+            + ("    mujoco.MjModel.from_xml_string(xml)\n" if compile_too else "")
+        )
+    return run_python(imports, work + _SECOND_DONE)
+
+
+def _patched(name: str, value: float, env: dict[str, str]) -> Run:
+    """A new process: ``assemble(name, overrides=...).get_model()``; says whether it was patched."""
+    # The model classes, schema and shipped specs loaded before the clock starts (as in a script that
+    # made a robot already); the whole-process figure counts them.
+    imports = "import assembler, assembler.registry.instances\nfrom assembler.build import service"
     work = (
-        f"for value in {_values(count)!r}:\n"
-        f"    robot = robosuite_robot_model({name!r})\n"
-        "    robot.set_joint_attribute('damping', np.full(robot.dof, value))\n"
-        "    xml = robot.get_xml()\n" + ("    mujoco.MjModel.from_xml_string(xml)\n" if compile_too else "")
+        f"assembler.assemble({name!r}, overrides={{'joint_defaults.frictionloss': {value!r}}}).get_model()\n"
+        "out['patched'] = service.counts.patched"
     )
-    return run_python(imports, work)
+    return run_python(imports, work, env)
+
+
+def patched_variant(name: str, xml_file: Path, scratch: Path, repeats: int) -> list[Figure]:
+    """A new variant of a cached robot through the API (patched), against MuJoCo compiling
+    robosuite's XML file, each in a new process; a new frictionloss value each run (a patched
+    variant is not stored, so a repeated value would be patched again all the same)."""
+    warm = _cache(scratch / f"p-{name}")
+    run_python("import assembler", f"assembler.assemble({name!r}).get_model()", warm)
+    results = _interleave(
+        {
+            "mujoco": lambda i: run_python(
+                "import mujoco", f"mujoco.MjModel.from_xml_path({str(xml_file)!r})"
+            ),
+            "ours": lambda i: _patched(name, 0.2 + i / 1000, warm),
+        },
+        repeats,
+    )
+    reference, ours = results["mujoco"], results["ours"]
+    if ours.inner.get("patched") != 1:
+        raise RuntimeError(f"{name}: the variant was compiled, not patched")
+    inside, theirs = ours.inner["inside"], reference.inner["inside"]
+    mujoco = "MuJoCo compile (robosuite XML)"
+    return [
+        ratio_figure(
+            "5 variants",
+            f"{name} API variant, whole process",
+            ours.wall,
+            f"{mujoco}, whole process",
+            reference.wall,
+            PATCHED_TARGET,
+            f"CPU {seconds_text(ours.cpu)} vs {seconds_text(reference.cpu)} "
+            f"({ours.cpu / reference.cpu:.2f}x)",
+        ),
+        ratio_figure(
+            "5 variants",
+            f"{name} API variant, in-process",
+            inside,
+            f"{mujoco}, in-process",
+            theirs,
+            PATCHED_TARGET,
+            "assemble(..., overrides=...).get_model() patched from the cached robot; imports and "
+            "shipped specs loaded before",
+        ),
+    ]
 
 
 def per_variant(name: str, count: int, scratch: Path, repeats: int) -> list[Figure]:
-    """Per-variant seconds (whole sweep timed inside a new process, divided by ``count``)."""
+    """Per-variant seconds, each side in a new process making two sweeps of ``count`` variants:
+    both sweeps over ``2 * count`` (first costs included), and the second sweep alone over ``count``."""
     filled = scratch / f"meshes-{name}"
-    runs: dict[str, list[Run]] = {"ours": [], "robosuite": [], "robosuite+compile": []}
+    cached = _cache(scratch / f"vc-{name}", filled)  # the robot's entry with its XML, as build -o leaves
+    run_python("import assembler", f"assembler.assemble({name!r}).get_xml()", cached)
+    runs: dict[str, list[Run]] = {"ours": [], "ours cached": [], "robosuite": [], "robosuite+compile": []}
     for index in range(repeats):
         env = _cache(scratch / f"v-{name}-{index}", filled)
         order = list(runs) if index % 2 == 0 else list(runs)[::-1]
         for case in order:
-            if case == "ours":
-                runs[case].append(_ours(name, count, scratch / f"variants-{name}-{index}", env))
+            if case.startswith("ours"):
+                folder = scratch / f"variants-{name}-{index}-{len(case)}"
+                runs[case].append(_ours(name, count, folder, cached if case == "ours cached" else env))
             else:
                 runs[case].append(_robosuite(name, count, compile_too=case.endswith("compile")))
-    each = {case: medians(results).inner["inside"] / count for case, results in runs.items()}
-    note = f"{count} variants of joint_defaults.damping, one process each side, meshes stored"
+    found = {case: medians(results).inner for case, results in runs.items()}
+    each = {case: inner["inside"] / (2 * count) for case, inner in found.items()}
+    warm = {case: inner["second"] / count for case, inner in found.items()}
+    note = f"2 x {count} variants (ours frictionloss, robosuite damping), one process each side"
     return [
+        ratio_figure(
+            "5 variants",
+            f"{name} per variant, warm",
+            warm["ours"],
+            "robosuite get_xml per variant, warm",
+            warm["robosuite"],
+            VARIANT_TARGET,
+            f"the second sweep of {count} in the process, in-process",
+        ),
         ratio_figure(
             "5 variants",
             f"{name} per variant",
@@ -64,23 +162,34 @@ def per_variant(name: str, count: int, scratch: Path, repeats: int) -> list[Figu
             "robosuite get_xml per variant",
             each["robosuite"],
             VARIANT_TARGET,
-            note,
+            note + ", first costs included (ours: the robot compiled once, meshes stored)",
         ),
         ratio_figure(
             "5 variants",
-            f"{name} per variant",
-            each["ours"],
-            "robosuite get_xml + MuJoCo compile",
-            each["robosuite+compile"],
+            f"{name} per variant, robot cached",
+            each["ours cached"],
+            "robosuite get_xml per variant",
+            each["robosuite"],
+            VARIANT_TARGET,
+            note + ", first costs included; the robot's model and XML in the cache (no compile)",
+        ),
+        ratio_figure(
+            "5 variants",
+            f"{name} per variant, warm",
+            warm["ours"],
+            "robosuite get_xml + MuJoCo compile, warm",
+            warm["robosuite+compile"],
             None,
-            "ours compiles every variant before writing it",
+            "ours compiles the robot once per process; each patchable variant is its XML edited",
         ),
     ]
 
 
 def jobs(name: str, count: int, scratch: Path, repeats: int) -> list[Figure]:
-    """``assembler variants`` with ``--jobs 1`` against ``--jobs 2`` (whole processes)."""
-    grid = "joint_defaults.damping=" + ",".join(str(v) for v in _values(count))
+    """``assembler variants`` with ``--jobs 1`` against ``--jobs 2`` (whole processes), on variants
+    that are each compiled (a description per variant: not a patchable field): what workers are for.
+    Patchable variants are written in milliseconds each, and by default in one process."""
+    grid = "description=" + ",".join(f"v{index}" for index in range(count))
     filled = scratch / f"meshes-{name}"
     walls: dict[int, list[float]] = {1: [], 2: []}
     for index in range(repeats):
@@ -99,7 +208,38 @@ def jobs(name: str, count: int, scratch: Path, repeats: int) -> list[Figure]:
             "--jobs 1",
             one,
             1 / JOBS_TARGET,
-            f"{count} variants; --jobs 2 is {speedup:.2f}x faster "
+            f"{count} compiled variants; --jobs 2 is {speedup:.2f}x faster "
             f"({seconds_text(two)} vs {seconds_text(one)})",
         )
     ]
+
+
+def main() -> None:
+    """These figures alone: ``python -m benchmarks.variants [ROBOT]``."""
+    from tests.parity.robosuite_side import robosuite_xml  # robosuite, only when run
+
+    parser = argparse.ArgumentParser(prog="python -m benchmarks.variants", description=main.__doc__)
+    parser.add_argument("robot", nargs="?", default="Panda")
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--count", type=int, default=16)
+    args = parser.parse_args()
+    compile_bytecode()
+    with tempfile.TemporaryDirectory(prefix="variants-bench-") as folder:
+        scratch = Path(folder)
+        xml_file = scratch / f"{args.robot}-robosuite.xml"
+        xml_file.write_text(robosuite_xml(args.robot))
+        run_python(
+            "import assembler",
+            f"assembler.assemble({args.robot!r}).get_model()",
+            _cache(scratch / f"meshes-{args.robot}"),
+        )
+        for figure in [
+            *patched_variant(args.robot, xml_file, scratch, args.repeats),
+            *per_variant(args.robot, args.count, scratch, args.repeats),
+            *jobs(args.robot, args.count, scratch, args.repeats),
+        ]:
+            print(figure.line(), flush=True)
+
+
+if __name__ == "__main__":
+    main()

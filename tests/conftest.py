@@ -73,6 +73,34 @@ INCLUDING_ARM_MJCF = """\
 """One joint, a mesh (meshes/tet.obj) and an ``<include>``d actuators.xml: every kind of file a build
 reads, for tests of what is read and written."""
 
+MESH_ARM_MJCF = """\
+<mujoco model="meshy">
+  <compiler angle="radian" meshdir="meshes"/>
+  <asset><mesh name="tet" file="tet.obj"/><mesh name="tet_big" file="tet.obj" scale="2 2 2"/></asset>
+  <worldbody>
+    <body name="base">
+      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/>
+      <body name="link1" pos="0 0 0.1">
+        <joint name="joint1" axis="0 0 1" range="-3 3"/>
+        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
+        <body name="link2" pos="0 0 0.1">
+          <joint name="joint2" axis="0 1 0" range="-2 2"/>
+          <geom name="link2_col" type="capsule" fromto="0 0 0 0.2 0 0" size="0.02" mass="0.5"/>
+          <geom name="link2_vis" type="mesh" mesh="tet_big" group="1" contype="0" conaffinity="0" mass="0"/>
+          <body name="right_hand" pos="0.2 0 0"/>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="act1" joint="joint1" kp="50" ctrlrange="-3 3"/>
+    <position name="act2" joint="joint2" kp="50" ctrlrange="-2 2"/>
+  </actuator>
+</mujoco>
+"""
+"""Two joints and one OBJ mesh (meshes/tet.obj, :data:`TETRAHEDRON_OBJ`) used twice, at two scales:
+for tests of what the cache and the mesh store keep."""
+
 TWO_LINK_SPEC = """\
 name: TwoLink
 mjcf: twolink.xml

@@ -118,6 +118,10 @@ DEFERRED = {
         "assembler.robosuite.bridge",
     ): "after robosuite is found (else one line)",
     ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
+    (
+        "assembler.models.robot_model",
+        "assembler.build.patched",
+    ): "a cache miss of a robot with overrides tries a patch, which reads the model classes",
     ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
     ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",
     (

@@ -91,23 +91,15 @@ def _quick_spec(resolved: Resolved, overrides: Sequence[Override]) -> RobotSpec 
         return None
 
 
-def resolve_variant(
-    base: RobotModel,
-    resolved: Resolved,
-    overrides: Sequence[Override],
-    grippers: Mapping[str, str | None] | None = None,
-    base_name: str | None = DEFAULT,
-) -> Resolved:
-    """The tables of ``base``'s robot (``resolved`` are its own) with ``overrides`` (which may not be
-    valid: a :class:`SpecError` names the override), resolved against ``base``'s prepared MJCF when
-    only light sections change."""
-    spec = _quick_spec(resolved, overrides)
-    if spec is None:  # a value the schema refuses, or a path the dump lacks: the full path says why
-        spec = with_overrides(type(base), overrides).spec
+def resolve_spec(
+    base: RobotModel, resolved: Resolved, spec: RobotSpec, overrides: Sequence[Override]
+) -> Resolved | None:
+    """The tables of ``base``'s robot with its spec replaced by ``spec`` (``base``'s own spec with
+    ``overrides``, which name any problem), resolved against ``base``'s prepared MJCF; None when
+    ``spec`` changes more than the light sections (then the variant must be prepared in full)."""
     ours, theirs = resolved.dump, spec.model_dump()
     if any(ours[key] != theirs[key] for key in ours if key not in LIGHT_SECTIONS):
-        robot = assemble(type(base).__name__, base.idn, base_name, grippers, overrides)
-        return Resolved.of(robot)
+        return None
     prepared = base.prepared()
     problems = init_qpos_problems(spec, prepared.joint_names, type(base).spec_problem)
     try:
@@ -126,3 +118,22 @@ def resolve_variant(
     return Resolved(
         spec, resolved.prefix, prepared.joint_names, joints, physical, actuators, theirs, names, owner
     )
+
+
+def resolve_variant(
+    base: RobotModel,
+    resolved: Resolved,
+    overrides: Sequence[Override],
+    grippers: Mapping[str, str | None] | None = None,
+    base_name: str | None = DEFAULT,
+) -> Resolved:
+    """The tables of ``base``'s robot (``resolved`` are its own) with ``overrides`` (which may not be
+    valid: a :class:`SpecError` names the override), resolved against ``base``'s prepared MJCF when
+    only light sections change."""
+    spec = _quick_spec(resolved, overrides)
+    if spec is None:  # a value the schema refuses, or a path the dump lacks: the full path says why
+        spec = with_overrides(type(base), overrides).spec
+    light = resolve_spec(base, resolved, spec, overrides)
+    if light is None:
+        return Resolved.of(assemble(type(base).__name__, base.idn, base_name, grippers, overrides))
+    return light

@@ -15,7 +15,7 @@ from typing import Any
 
 import mujoco
 
-from assembler.build.service import default_store, load_entry
+from assembler.build.lookup import default_store, load_entry
 from assembler.cache.dependencies import Recorder
 from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
 from assembler.cache.settings import cache_disabled

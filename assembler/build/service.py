@@ -8,7 +8,8 @@ written in the background with every file the compile read. The keyframe travels
 (:class:`~assembler.mjcf.keyframe.Keyframe`), so an assembly built later (for its XML) carries
 exactly the keyframe of the model that was handed out. An entry also keeps the assembly's emitted
 XML once it was asked for (:func:`compile_xml`), so a repeated ``get_xml`` neither builds nor
-compiles.
+compiles. The lookup itself (the store, a stored model, an assembly's key, the counts) is
+:mod:`assembler.build.lookup`, which a cached answer imports without this module.
 """
 
 from __future__ import annotations
@@ -19,15 +20,16 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.build.compile import compile_and_emit, compile_home
+from assembler.build.lookup import counts as counts  # the lookup's names, still asked for here
+from assembler.build.lookup import default_store as default_store
+from assembler.build.lookup import entry_key as entry_key
+from assembler.build.lookup import load_entry
+from assembler.build.lookup import recent as _recent
 from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.cache.folder import FolderInfo
 from assembler.cache.folder import clear as clear_folder
-from assembler.cache.inputs import BuildInputs
-from assembler.cache.key import cache_key
-from assembler.cache.memory import RecentModels
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.cache.meshes import default_mesh_store
-from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
 from assembler.files.inputs import note_inputs
@@ -62,31 +64,6 @@ class CompiledModel:
     keyframe: Keyframe
 
 
-@dataclass
-class LookupCounts:
-    """What compiles in this process did, for tests and the benchmark."""
-
-    hits: int = 0
-    """Answered from the cache."""
-
-    misses: int = 0
-    """Compiled, then stored."""
-
-    bypassed: int = 0
-    """Compiled without looking: cache disabled, or a part the key cannot describe."""
-
-
-counts = LookupCounts()
-
-_recent = RecentModels()
-
-
-def default_store() -> ModelStore:
-    """The store the environment points at (``ASSEMBLER_CACHE_DIR``, ``ASSEMBLER_CACHE_MAX_BYTES``;
-    the bound is the whole cache folder's, :mod:`assembler.cache.folder`)."""
-    return ModelStore(cache_dir(), max_bytes())
-
-
 def clear(store: ModelStore) -> FolderInfo:
     """Empty the cache folder of ``store`` (every part: models, meshes, request records, converted
     meshes, robosuite part files) and forget the models this process kept from it; returns what it
@@ -100,21 +77,6 @@ def wait_for_writes() -> None:
     (tests, benchmarks); the interpreter waits for entries at exit by itself, not for mesh fillers."""
     wait_for_entries()
     wait_for_fillers()
-
-
-def load_entry(key: str) -> mujoco.MjModel | None:
-    """The model stored under ``key`` if its files are unchanged (a hit, counted), else None; a
-    model loaded before in this process is copied from memory (:mod:`assembler.cache.memory`)."""
-    models = default_store()
-    place = (str(models.directory), key)
-    model = _recent.get(place)
-    if model is None:
-        models.wait_for(key)
-        found = models.load(key)
-        model = _recent.offer(place, *found) if found is not None else None
-    if model is not None:
-        counts.hits += 1
-    return model
 
 
 def _recorder(assembly: Assembly) -> Recorder:
@@ -138,18 +100,17 @@ def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     return CompiledModel(model, Keyframe.of(model))
 
 
-def entry_key(inputs: BuildInputs, cache: bool = True) -> str | None:
-    """The cache entry that holds the model ``inputs`` describe, or None when the cache is not used:
-    ``cache=False`` (``--no-cache``), ``ASSEMBLER_NO_CACHE``, or a hand-written part. Computed once
-    per request by the caller and passed on, so no key is hashed twice."""
-    return cache_key(inputs) if cache and not cache_disabled() else None
-
-
 def compile_model(
-    key: str | None, build: Callable[[], Assembly], cache: bool = True, store: bool = True
+    key: str | None,
+    build: Callable[[], Assembly],
+    cache: bool = True,
+    store: bool = True,
+    patched: Callable[[], CompiledModel | None] | None = None,
 ) -> CompiledModel:
     """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
-    compiled and (with ``store``) kept for next time; with no key, compiled every time."""
+    compiled and (with ``store``) kept for next time; with no key, compiled every time. On a miss,
+    ``patched()`` is asked first: a model it returns (made without a compile) is the answer, and
+    is not stored (see :mod:`assembler.build.patched` for why)."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)
@@ -159,6 +120,10 @@ def compile_model(
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
     counts.misses += 1
+    answer = patched() if patched is not None else None
+    if answer is not None:
+        counts.patched += 1
+        return answer
     assembly = _built(build)
     recorder = _recorder(assembly)
     compiled = compile_assembly(assembly)

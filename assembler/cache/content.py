@@ -4,9 +4,10 @@ Some stored files must be read by something else as files (MuJoCo reads an OBJ c
 COLLADA; robosuite reads the MJCF of each part), so they cannot be checked as they are read. Each
 is named ``<prefix>-<digest><suffix>``, the digest (:data:`~assembler.cache.file_state.DIGEST`) of
 its own content, and is hashed again whenever it is handed out: a file edited or damaged in the
-cache folder is removed and made again, never served. A use does not touch the file: a converted
-mesh is itself an input of the compiled models made from it, whose entries would see every use as
-a change; its modification time (when it was made) orders eviction (:mod:`assembler.cache.folder`).
+cache folder is removed and made again, never served. A use sets the file's access time and keeps
+its modification time: a converted mesh is itself an input of the compiled models made from it, and
+its modification time is what says when it was made; eviction orders these files by their last use,
+the later of the two times (:mod:`assembler.cache.folder`), so a file in use is not the first to go.
 Files are written whole under a temporary name and moved into place with one rename, so two
 processes making one file agree on it.
 
@@ -22,6 +23,7 @@ import json
 import os
 import re
 import tempfile
+import time
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import asdict
 from pathlib import Path
@@ -68,6 +70,13 @@ def _whole(path: Path) -> bool:
     return False
 
 
+def _used(path: Path) -> Path:
+    """``path``, its use recorded in its access time (its modification time kept) for eviction."""
+    with contextlib.suppress(OSError):  # a read-only cache folder is still served; it is not evicted from
+        os.utime(path, ns=(time.time_ns(), path.stat().st_mtime_ns))
+    return path
+
+
 def _temporary(folder: Path, suffix: str) -> Path:
     handle, name = tempfile.mkstemp(dir=folder, prefix=".", suffix=suffix + TEMP_SUFFIX)
     os.close(handle)
@@ -81,7 +90,7 @@ def kept_file(folder: Path, prefix: str, suffix: str, make: Callable[[str], obje
     for found in sorted(folder.glob(f"{glob_escape(prefix)}-*{suffix}")):
         match = _NAME.match(found.name)
         if match is not None and match["prefix"] == prefix and _whole(found):
-            return found
+            return _used(found)
     temporary = _temporary(folder, suffix)
     try:
         make(str(temporary))
@@ -98,7 +107,7 @@ def text_file(folder: Path, text: str, suffix: str) -> Path:
     data = text.encode("utf-8")
     target = folder / f"text-{buffer_digest(data)}{suffix}"
     if target.exists() and _whole(target):
-        return target
+        return _used(target)
     _write_whole(target, data)
     return target
 
@@ -138,7 +147,7 @@ def recorded_text_file(
         states = [FileState(**state) for state in data["read"]]
         target = folder / str(data["file"])
         if target.parent == folder and check_all(states) is not None and target.exists() and _whole(target):
-            return target
+            return _used(target)
     files = list(read)
     recorder = Recorder(files, read_earlier() if read_earlier is not None else None)
     target = text_file(folder, emit(), suffix)

@@ -14,6 +14,9 @@ removed. A unit of eviction is what goes together (a model's manifest with its m
 files; any other file alone); its last use is its modification time, which every hit sets. After
 every write, temporary files and claims older than :data:`GRACE_SECONDS` (their writer died) are
 removed, then the least recently used units until everything fits ``ASSEMBLER_CACHE_MAX_BYTES``.
+Files named by their content (converted meshes, robosuite's part files) keep their modification
+time (when they were made: a model made from a converted mesh records it) and mark a use in their
+access time instead (:mod:`assembler.cache.content`): their last use is the later of the two.
 """
 
 from __future__ import annotations
@@ -144,7 +147,8 @@ def evict(root: Path, max_bytes: int) -> None:
         unit = units.setdefault(group, _Unit(0, 0, []))
         unit.size += stat.st_size
         unit.paths.append(Path(item.path))
-        unit.last_use_ns = max(unit.last_use_ns, stat.st_mtime_ns)
+        used = max(stat.st_mtime_ns, stat.st_atime_ns) if PARTS[part] is CONTENT_FILE else stat.st_mtime_ns
+        unit.last_use_ns = max(unit.last_use_ns, used)
         if part == "" and item.name.endswith(".json"):  # a model's last use is its manifest's
             unit.used_ns = stat.st_mtime_ns
     for unit in sorted(units.values(), key=lambda unit: unit.last_use):

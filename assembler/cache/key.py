@@ -36,10 +36,16 @@ def code_fingerprint() -> str:
     version, and a stale model after a code change would be a silent wrong answer. Stat rather
     than content keeps this under a millisecond; an edit or a new install changes the times.
     """
+    found = []
+    for folder, _, names in os.walk(_PACKAGE):  # os.walk, not Path.rglob: a third of the time
+        inside = os.path.relpath(folder, _PACKAGE)
+        for name in names:
+            if name.endswith(".py"):
+                stat = os.stat(os.path.join(folder, name))
+                found.append((os.path.normpath(os.path.join(inside, name)), stat.st_size, stat.st_mtime_ns))
     digest = hashlib.blake2b(digest_size=16)
-    for path in sorted(_PACKAGE.rglob("*.py")):
-        stat = path.stat()
-        digest.update(f"{path.relative_to(_PACKAGE)}:{stat.st_size}:{stat.st_mtime_ns};".encode())
+    for relative, size, mtime_ns in sorted(found):
+        digest.update(f"{relative}:{size}:{mtime_ns};".encode())
     return f"{__version__}+{digest.hexdigest()}"
 
 

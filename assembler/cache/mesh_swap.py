@@ -22,12 +22,12 @@ turn a model that compiles into an error (the error a user sees is the files' ow
 from __future__ import annotations
 
 import atexit
+import importlib
 import json
 import os
 import subprocess
 import sys
 from collections.abc import Callable, Iterable
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from types import TracebackType
 from typing import TypeVar
@@ -150,7 +150,9 @@ def use_stored_meshes(spec: mujoco.MjSpec, store: MeshStore | None = None) -> Me
     meshes = {mesh: users for mesh, users in _swappable(spec).items() if mesh[0] not in assets}
     sizes = store.sizes() if meshes else set()
     if len(meshes) > 1:
-        with ThreadPoolExecutor(min(4, os.cpu_count() or 1)) as pool:  # hashing releases the GIL
+        # concurrent.futures imported here (~4 ms): a cached answer imports this module, compiles nothing
+        futures = importlib.import_module("concurrent.futures")
+        with futures.ThreadPoolExecutor(min(4, os.cpu_count() or 1)) as pool:  # hashing releases the GIL
             found = list(pool.map(lambda mesh: _look_up(store, mesh, sizes), meshes))
     else:
         found = [_look_up(store, mesh, sizes) for mesh in meshes]

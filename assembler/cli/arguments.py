@@ -208,7 +208,12 @@ def _variants(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--normal", action="append", default=[], metavar="PATH=MEAN:STD", help="normal draw (repeatable)"
     )
-    parser.add_argument("--jobs", type=int, help="worker processes (default: all cores)")
+    parser.add_argument(
+        "--jobs",
+        type=int,
+        help="worker processes (default: all cores; one when only joint, actuator, friction or init_qpos "
+        "values vary, each written in milliseconds)",
+    )
     parser.add_argument(
         "--cache",
         action="store_true",

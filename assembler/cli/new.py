@@ -7,19 +7,31 @@ import sys
 from pathlib import Path
 
 from assembler.files.paths import display_path
+from assembler.files.repositories import MARKER
 from assembler.tools.new import write_new_spec
 from assembler.tools.new.checking import build_problems
+from assembler.tools.new.packages import environment, found_packages
 
 
 def run(args: argparse.Namespace) -> int:
     output = Path(args.output) if args.output else None
     written, target = write_new_spec(Path(args.model_file), output, args.kind, args.force)
-    problems = build_problems(target, written.kind)
+    # A package the user has still to declare is found for the check, as it will be once declared.
+    pending = [package for package in written.packages if package.declared != "beside the spec"]
+    with found_packages(pending):
+        problems = build_problems(target, written.kind)
     print(f"wrote {display_path(target)}: {written.kind} {written.name}", end="")
-    if not problems:
-        print(" (validated and compiled); check each 'guess:' and settle each 'decide:' comment")
-        return 0
-    print("; it does not build as written:")
-    for line in problems:
-        print(line, file=sys.stderr)
-    return 1
+    if len(pending) < len(written.packages):
+        print(f" and {display_path(target.parent / MARKER)}", end="")
+    if problems:
+        print("; it does not build as written:")
+        for line in problems:
+            print(line, file=sys.stderr)
+        return 1
+    found = " once the packages below are found" if pending else ""
+    print(f" (validated and compiled{found}); check each 'guess:' and settle each 'decide:' comment")
+    for package in pending:
+        print(f"to do: {package.todo}")
+    for name, value in environment(pending).items():
+        print(f"  export {name}={value}")
+    return 0

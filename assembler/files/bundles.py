@@ -21,6 +21,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 from pathlib import Path
 
+from assembler.cache.settings import volatile_folders
 from assembler.errors import AssemblerError
 from assembler.files.paths import display_path
 from assembler.files.writing import (
@@ -196,3 +197,9 @@ def write_model(xml: str, target: Path, volatile: Iterable[Path]) -> tuple[Path,
     folder = target.parent / assets
     written = _write(target, root, placed, folder, folder, False)
     return written, len(set(placed.values()))
+
+
+def save_model(xml: str, target: Path) -> Path:
+    """Write ``xml`` to ``target`` as ``build -o`` does (:func:`write_model`): the files it names in the
+    cache or scratch folders are copied beside it, so the saved model outlives them."""
+    return write_model(xml, target, volatile_folders())[0]

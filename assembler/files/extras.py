@@ -8,8 +8,9 @@ wherever pip does.
 
 from __future__ import annotations
 
-import importlib.metadata
+import importlib
 import re
+from types import ModuleType
 
 DISTRIBUTION = "robot-assembler"
 
@@ -17,11 +18,18 @@ EXTRAS: dict[str, str] = {"robosuite": "robosuite"}
 """Top-level package -> the extra of this project that installs it."""
 
 
+def _metadata() -> ModuleType:
+    # importlib.metadata pulls in email, csv, socket and calendar (~15 ms): every cached answer
+    # imports this module through assembler.files.paths, and only an error message reads metadata.
+    return importlib.import_module("importlib.metadata")
+
+
 def extra_requirements(extra: str) -> list[str]:
     """The requirements of one of our extras (e.g. ``robosuite==1.5.2``), from the installed metadata."""
+    metadata = _metadata()
     try:
-        requirements = importlib.metadata.requires(DISTRIBUTION) or []
-    except importlib.metadata.PackageNotFoundError:  # run from a source tree that is not installed
+        requirements = metadata.requires(DISTRIBUTION) or []
+    except metadata.PackageNotFoundError:  # run from a source tree that is not installed
         return []
     marker = re.compile(rf"""extra\s*==\s*["']{re.escape(extra)}["']""")
     return [line.split(";")[0].strip() for line in requirements if marker.search(line)]

@@ -22,6 +22,18 @@ from assembler.mjcf.removal import remove_free_joints
 FREE = mujoco.mjtJoint.mjJNT_FREE
 MANIPULATOR_MOUNT = "manipulator_mount"
 
+USER_COLUMNS: tuple[str, ...] = (
+    "nuser_body",
+    "nuser_jnt",
+    "nuser_geom",
+    "nuser_site",
+    "nuser_cam",
+    "nuser_tendon",
+    "nuser_actuator",
+    "nuser_sensor",
+)
+"""``<size>`` fields that say how many user-data columns an element kind has (-1: as many as used)."""
+
 
 def attach(
     assembly: mujoco.MjSpec,
@@ -33,10 +45,18 @@ def attach(
 
     robosuite never merges a part's <option>/<visual> either. The part takes the assembly's values
     before attaching, so MuJoCo sees no conflict: otherwise it warns at compile time and appends
-    the warning to MUJOCO_LOG.TXT in the user's working directory.
+    the warning to MUJOCO_LOG.TXT in the user's working directory. User-data columns are the
+    exception: MuJoCo's attach keeps the assembly's count (-1, as many as used) and so cuts a part's
+    declared columns (the Shadow hand's 16 ``nuser_actuator``), so the assembly takes the larger count.
+    The part's memory sizes (``njmax``, ``nconmax``, ``memory``) are not carried: MuJoCo says so.
     """
     part.option = assembly.option
     part.visual = assembly.visual
+    for field in USER_COLUMNS:
+        columns = max(getattr(assembly, field), getattr(part, field))
+        setattr(assembly, field, columns)
+        if getattr(part, field) != -1:
+            setattr(part, field, columns)  # the same count on both sides: no conflict to warn of
     prefix_what_attach_misses(part, prefix)
     assembly.attach(part, frame=frame, prefix=prefix)
 

@@ -9,6 +9,7 @@ build itself. Name lists come from the parts, so they cannot go stale the way ro
 
 from __future__ import annotations
 
+import importlib
 from pathlib import Path
 from typing import Any, ClassVar
 
@@ -16,10 +17,10 @@ import mujoco
 import numpy as np
 
 from assembler.build.compile import compile_and_emit, compile_home
-from assembler.build.service import Assembly, compile_model, compile_xml, entry_key
+from assembler.build.service import Assembly, CompiledModel, compile_model, compile_xml, entry_key
 from assembler.cache.inputs import BuildInputs, JointEdit
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
-from assembler.files.writing import write_atomically
+from assembler.files.bundles import save_model
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import set_joint_attribute_value
@@ -237,10 +238,19 @@ class RobotModel(PlacedPart):
         kept there unless ``store`` is False."""
         if self._mjspec is not None:
             return compile_home(self._mjspec, self.assembly_home(), self.describe(), meshes=cache)
-        self.entry_key = entry_key(self.build_inputs(), cache)
-        compiled = compile_model(self.entry_key, self._assembly, cache=cache, store=store)
+        self.entry_key = key = entry_key(self.build_inputs(), cache)
+        patched = self._patched if key is not None else None
+        compiled = compile_model(key, self._assembly, cache=cache, store=store, patched=patched)
         self._keyframe = compiled.keyframe
         return compiled.model
+
+    def _patched(self) -> CompiledModel | None:
+        """On a cache miss: this robot patched from the cached model of the robot without its
+        overrides (not stored), or None to compile (:mod:`assembler.build.patched`, which reads the
+        model classes, hence imported late)."""
+        patched = importlib.import_module("assembler.build.patched")
+        answer: CompiledModel | None = patched.patched_variant(self)
+        return answer
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:
         """Keep ``mujoco_model``, or compile one now."""
@@ -262,7 +272,7 @@ class RobotModel(PlacedPart):
         return xml
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
-        """Write the MJCF to ``path`` atomically; nothing is written if compilation fails."""
-        target = Path(path)
-        write_atomically(target, self.get_xml(cache=cache))
-        return target
+        """Write the MJCF to ``path`` atomically; nothing is written if compilation fails. Assets
+        it names in the cache folder (meshes converted from COLLADA) are copied beside it, under
+        ``FILE-assets/``, as ``assembler build -o`` does: the file loads after the cache is cleared."""
+        return save_model(self.get_xml(cache=cache), Path(path))

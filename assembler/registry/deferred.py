@@ -32,10 +32,10 @@ from typing import Any
 import mujoco
 
 from assembler.build.load_model import assembly_request
+from assembler.build.lookup import entry_key
 from assembler.build.repeat import KeyedRequest, record_of, recorded_model, recorded_xml
-from assembler.build.service import entry_key
 from assembler.cache.requests import RequestRecord
-from assembler.files.writing import write_atomically
+from assembler.files.bundles import save_model
 from assembler.mjcf.keyframe import Keyframe
 from assembler.registry.arguments import DEFAULT, ArgumentKind, argument_kind
 
@@ -153,10 +153,9 @@ class DeferredRobot:
         return _materialise(self).get_xml(cache, store, meshes)  # type: ignore[no-any-return]
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
-        """As :meth:`RobotModel.save`: the MJCF written to ``path`` atomically."""
-        target = Path(path)
-        write_atomically(target, self.get_xml(cache=cache))
-        return target
+        """As :meth:`RobotModel.save`: the MJCF written to ``path`` with the assets it names in
+        the cache folder copied beside it."""
+        return save_model(self.get_xml(cache=cache), Path(path))
 
     # Anything else is the real robot's: made on first use, in place.
 

@@ -22,32 +22,7 @@ from assembler.build import service
 from assembler.build.service import default_store, wait_for_writes
 from assembler.cli import main
 from assembler.files.paths import package_root
-from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
-
-MESH_ARM = """\
-<mujoco model="meshy">
-  <compiler angle="radian" meshdir="meshes"/>
-  <asset><mesh name="tet" file="tet.obj"/></asset>
-  <worldbody>
-    <body name="base">
-      <geom name="base_col" type="cylinder" size="0.05 0.05" mass="2"/>
-      <body name="link1" pos="0 0 0.1">
-        <joint name="joint1" axis="0 0 1" range="-3 3"/>
-        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
-        <body name="link2" pos="0 0 0.1">
-          <joint name="joint2" axis="0 1 0" range="-2 2"/>
-          <geom name="link2_col" type="capsule" fromto="0 0 0 0.2 0 0" size="0.02" mass="0.5"/>
-          <body name="right_hand" pos="0.2 0 0"/>
-        </body>
-      </body>
-    </body>
-  </worldbody>
-  <actuator>
-    <position name="act1" joint="joint1" kp="50" ctrlrange="-3 3"/>
-    <position name="act2" joint="joint2" kp="50" ctrlrange="-2 2"/>
-  </actuator>
-</mujoco>
-"""
+from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 
 PARENT_SPEC = "name: MeshArm\nmjcf: meshy.xml\ninit_qpos: [0.5, -0.5]\njoint_defaults: {damping: 0.3}\n"
 CHILD_SPEC = "name: MeshArmSoft\nextends: MeshArm\njoint_defaults: {armature: 0.05}\n"
@@ -88,7 +63,7 @@ def mesh_arm(tmp_path: Path) -> Path:
     (folder / "meshes").mkdir(parents=True)
     for name, text in [
         ("meshes/tet.obj", TETRAHEDRON_OBJ),
-        ("meshy.xml", MESH_ARM),
+        ("meshy.xml", MESH_ARM_MJCF),
         ("mesh_arm.yaml", PARENT_SPEC),
         ("mesh_arm_soft.yaml", CHILD_SPEC),
     ]:
@@ -226,7 +201,7 @@ def test_a_model_from_a_file_edited_a_moment_ago_is_not_stored(mesh_arm: Path, p
 def test_editing_the_mjcf_is_a_miss(mesh_arm: Path) -> None:
     load("MeshArm")
     xml = mesh_arm / "meshy.xml"
-    edit(xml, MESH_ARM.replace('range="-2 2"', 'range="-1 1"'))
+    edit(xml, MESH_ARM_MJCF.replace('range="-2 2"', 'range="-1 1"'))
     assembler.register_specs(mesh_arm)  # a new robot instance reads the edited file
     assert counted(lambda: load("MeshArm")) == (0, 1, 0)
     assert load("MeshArm").joint("robot0_joint2").range.tolist() == [-1, 1]
@@ -449,7 +424,9 @@ def test_benchmark_quick_run_writes_every_measure(tmp_path: Path) -> None:
 
 def test_an_mjcf_edited_after_the_robot_was_made_is_not_stored_under_its_new_content(mesh_arm: Path) -> None:
     robot = assembler.assemble("MeshArm")  # parses meshy.xml now
-    edit(mesh_arm / "meshy.xml", MESH_ARM.replace('size="0.05 0.05"', 'size="0.09 0.05"'), seconds_ago=30)
+    edit(
+        mesh_arm / "meshy.xml", MESH_ARM_MJCF.replace('size="0.05 0.05"', 'size="0.09 0.05"'), seconds_ago=30
+    )
     robot.get_model()  # compiled from what was parsed: the old radius
     wait_for_writes()
     assert load("MeshArm").geom("robot0_base_col").size[0] == pytest.approx(0.09)
@@ -457,7 +434,11 @@ def test_an_mjcf_edited_after_the_robot_was_made_is_not_stored_under_its_new_con
 
 def test_an_included_file_edited_between_two_robots_is_read_again(mesh_arm: Path) -> None:
     edit(mesh_arm / "parts.xml", '<mujoco><default><geom rgba="1 0 0 1"/></default></mujoco>', 3600)
-    edit(mesh_arm / "meshy.xml", MESH_ARM.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'), 3600)
+    edit(
+        mesh_arm / "meshy.xml",
+        MESH_ARM_MJCF.replace("<asset>", '<include file="parts.xml"/>\n  <asset>'),
+        3600,
+    )
     assembler.register_specs(mesh_arm)
     assert load("MeshArm").geom("robot0_link2_col").rgba.tolist() == [
         1.0,
@@ -479,9 +460,9 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         (package / "meshes").mkdir(parents=True)
         (package / "__init__.py").write_text("")
         edit(package / "meshes" / "tet.obj", TETRAHEDRON_OBJ, 3600)
-        edit(package / "robot.xml", MESH_ARM.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
+        edit(package / "robot.xml", MESH_ARM_MJCF.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
-            "import sys, assembler; (cls,) = assembler.register_specs(sys.argv[1]); "
+            "import sys, assembler, assembler.build.service; (cls,) = assembler.register_specs(sys.argv[1]); "
             "m = assembler.assemble(cls.__name__).get_model(); assembler.build.service.wait_for_writes(); "
             "print(m.geom('robot0_base_col').size[0])"
         )

@@ -18,7 +18,7 @@ from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.files.paths import package_root
 from assembler.mjcf.emit import to_xml
-from tests.conftest import TETRAHEDRON_OBJ, use_private_cache
+from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 
 ROBOSUITE = package_root("robosuite") is not None
 needs_robosuite = pytest.mark.skipif(not ROBOSUITE, reason="robosuite is not installed")
@@ -70,31 +70,12 @@ def test_xml_emitted_with_stored_meshes_is_the_same_text() -> None:
     assert assembler.assemble("Panda").get_xml() == expected
 
 
-MESH_ARM = """\
-<mujoco model="meshy">
-  <compiler angle="radian" meshdir="meshes"/>
-  <asset><mesh name="tet" file="tet.obj"/><mesh name="tet_big" file="tet.obj" scale="2 2 2"/></asset>
-  <worldbody>
-    <body name="base">
-      <geom name="base_col" type="mesh" mesh="tet_big" mass="2"/>
-      <body name="link1" pos="0 0 0.1">
-        <joint name="joint1" axis="0 0 1" range="-3 3"/>
-        <geom name="link1_col" type="mesh" mesh="tet" mass="1"/>
-        <body name="right_hand" pos="0.1 0 0"/>
-      </body>
-    </body>
-  </worldbody>
-  <actuator><position name="act1" joint="joint1" kp="50" ctrlrange="-3 3"/></actuator>
-</mujoco>
-"""
-
-
 def test_xml_emitted_with_meshes_from_the_mesh_store_is_the_same_text(tmp_path: Path) -> None:
     """Without robosuite too: an OBJ mesh used twice, read from the mesh store by both compiles."""
     folder = tmp_path / "arm"
     (folder / "meshes").mkdir(parents=True)
     (folder / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ)
-    (folder / "meshy.xml").write_text(MESH_ARM)
+    (folder / "meshy.xml").write_text(MESH_ARM_MJCF)
     (folder / "mesh_arm.yaml").write_text("name: MeshArm\nmjcf: meshy.xml\n")
     for path in [*folder.rglob("*"), folder]:
         os.utime(path, (time.time() - 3600,) * 2)

@@ -26,7 +26,9 @@ import assembler
 from assembler import cache
 from assembler.build import service
 from assembler.build.service import wait_for_writes
-from assembler.cache.content import PARTS, content_folder
+from assembler.cache.content import CONVERTED, PARTS, content_folder
+from assembler.cache.content import kept_file as kept_content
+from assembler.cache.folder import evict
 from assembler.cli import main
 from assembler.robosuite.files import kept_file, written_file
 from assembler.urdf.meshes import converted_dir, importable
@@ -252,6 +254,17 @@ def test_a_written_model_still_loads_after_the_cache_is_removed(urdf_arm: Path, 
 
 
 @NEEDS_CONVERTER
+def test_a_model_saved_from_python_still_loads_after_the_cache_is_removed(
+    urdf_arm: Path, tmp_path: Path
+) -> None:
+    assembler.register_specs("arm.yaml")
+    saved = assembler.assemble("DaeArm", base=None).save(tmp_path / "saved.xml")
+    shutil.rmtree(tmp_path / "cache")
+    assert mujoco.MjModel.from_xml_path(str(saved)).nmesh > 0
+    assert (tmp_path / "saved.xml-assets").is_dir()
+
+
+@NEEDS_CONVERTER
 def test_the_bound_clear_and_info_count_every_part(
     urdf_arm: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -279,6 +292,26 @@ def test_the_bound_clear_and_info_count_every_part(
     capsys.readouterr()
     assert main(["cache", "clear"]) == 0
     assert [p for p in (tmp_path / "cache").rglob("*") if p.is_file()] == []
+
+
+def test_a_converted_mesh_in_use_outlives_older_unused_files_and_keeps_its_modification_time(
+    folder: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    converted = content_folder(CONVERTED)
+    made = [
+        kept_content(converted, name, ".obj", lambda path: Path(path).write_bytes(b"v 0 0 0\n" * 5000))
+        for name in ("used", "unused")
+    ]
+    backdate(made[1])
+    then = time.time() - 7200
+    os.utime(made[0], (then, then))  # made before the other; used now, by a build about to read it
+    stamp = made[0].stat().st_mtime_ns
+    assert kept_content(converted, "used", ".obj", lambda path: None) == made[0]
+    assert (
+        made[0].stat().st_mtime_ns == stamp
+    )  # still the time it was made: the models made from it stay valid
+    evict(folder / "cache", made[0].stat().st_size + 100)
+    assert made[0].is_file() and not made[1].exists()
 
 
 def test_a_kept_part_file_is_served_without_emitting_while_its_files_are_unchanged(folder: Path) -> None:

@@ -181,7 +181,8 @@ def test_a_spec_registered_as_text_is_never_recorded(arms: Path) -> None:
 def test_requests_in_environments_with_another_package_location_do_not_share_records(tmp_path: Path) -> None:
     edit(tmp_path / "fake.yaml", "name: FakeBot\nmjcf: package://fakebot/robot.xml\n", 3600)
     script = (
-        "import sys, assembler; m = assembler.load_model(sys.argv[1]); assembler.build.service.wait_for_writes(); "
+        "import sys, assembler, assembler.build.service; m = assembler.load_model(sys.argv[1]); "
+        "assembler.build.service.wait_for_writes(); "
         "print(m.geom('robot0_base_col').size[0], 'assembler.registry.catalog' in sys.modules)"
     )
     seen = []

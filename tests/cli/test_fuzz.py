@@ -253,10 +253,9 @@ def isolated(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     """A working folder (MuJoCo may write a log there) and a cache of its own."""
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
-    # every part of the one store counts (decoded and converted meshes too): 50M made eviction take a
-    # converted mesh a later build in this process was about to read (a race the note of this change
-    # names); the bound stays, with room for the shipped robots
-    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", "500M")
+    # a small bound, so that eviction runs between the builds of one process: every part of the one
+    # store counts, and a converted mesh one build has just been handed must not be the first to go
+    monkeypatch.setenv("ASSEMBLER_CACHE_MAX_BYTES", "50M")
     yield tmp_path
 
 

@@ -12,14 +12,17 @@ import pytest
 
 from assembler.registry.catalog import register_specs
 from assembler.tools.new import write_new_spec
-from tests.corpus.cases import CASES, Case
+from assembler.tools.new.packages import environment
+from tests.corpus.cases import Case
 
 
 class Corpus:
-    """Specs written by ``assembler new`` into ``folder``, one per case, each once per session."""
+    """Specs written by ``assembler new`` into ``folder``, one per case, each once per session, and
+    the environment set as ``new`` tells a user to set it (``before``: the variables' values first)."""
 
     def __init__(self, folder: Path) -> None:
         self.folder = folder
+        self.before: dict[str, str | None] = {}
 
     def model_file(self, case: Case) -> Path:
         path = case.path()
@@ -31,7 +34,10 @@ class Corpus:
         """The spec ``assembler new`` writes for the case, as written (no field added)."""
         target = self.folder / f"{case.id}.yaml"
         if not target.exists():
-            write_new_spec(self.model_file(case), target)
+            written, _ = write_new_spec(self.model_file(case), target)
+            for variable, value in environment(written.packages).items():  # new's "to do: export ..."
+                self.before.setdefault(variable, os.environ.get(variable))
+                os.environ[variable] = value
             if case.name is not None:  # the one field a user changes here (see Case.name)
                 text = target.read_text()
                 target.write_text(re.sub(r"^name: \S+", f"name: {case.name}", text, count=1, flags=re.M))
@@ -45,14 +51,13 @@ class Corpus:
 
 @pytest.fixture(scope="session")
 def corpus(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Corpus]:
-    """The written specs; ROS_PACKAGE_PATH set as a user of a case with ``ros_packages`` sets it."""
-    folders = [str(folder) for case in CASES if (folder := case.ros_folder()) is not None]
-    before = os.environ.get("ROS_PACKAGE_PATH")
-    os.environ["ROS_PACKAGE_PATH"] = os.pathsep.join([*folders, *([before] if before else [])])
+    """The written specs; afterwards the environment as it was."""
+    written = Corpus(tmp_path_factory.mktemp("corpus-specs"))
     try:
-        yield Corpus(tmp_path_factory.mktemp("corpus-specs"))
+        yield written
     finally:
-        if before is None:
-            os.environ.pop("ROS_PACKAGE_PATH", None)
-        else:
-            os.environ["ROS_PACKAGE_PATH"] = before
+        for variable, value in written.before.items():
+            if value is None:
+                os.environ.pop(variable, None)
+            else:
+                os.environ[variable] = value

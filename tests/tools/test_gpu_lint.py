@@ -192,20 +192,6 @@ WARP_REFUSALS = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(WARP_REFUSALS))
-def test_what_mujoco_warp_refuses_is_a_lint_error_naming_the_element(
-    case: str, capsys: pytest.CaptureFixture[str], write: Write, warp: ModuleType
-) -> None:
-    changes, code, subject, refusal = WARP_REFUSALS[case]
-    spec = robot(write, **changes)
-    with pytest.raises(NotImplementedError, match=re.escape(refusal)):
-        warp.put_model(compiled(spec))
-    findings = [f for f in gpu_findings(capsys, spec, "mjwarp") if f["severity"] == "error"]
-    assert codes(findings) == [(code, "error", subject)]
-    assert "MuJoCo Warp's put_model refuses" in findings[0]["why"]
-    assert findings[0]["fix"]
-
-
 def chain_mjcf(joints: int) -> str:
     """A chain of ``joints`` hinges, each with friction loss: one constraint row each, always active."""
     opening = "".join(
@@ -334,18 +320,25 @@ MJX_REFUSALS = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(MJX_REFUSALS))
-def test_what_mjx_refuses_is_a_lint_error_naming_the_element(
-    case: str, capsys: pytest.CaptureFixture[str], write: Write, mjx: ModuleType
+ENGINE_REFUSALS = [("mjwarp", case) for case in sorted(WARP_REFUSALS)] + [
+    ("mjx", case) for case in sorted(MJX_REFUSALS)
+]
+"""(lint target, case) for every refusal of either engine's ``put_model``."""
+
+
+@pytest.mark.parametrize(("target", "case"), ENGINE_REFUSALS)
+def test_what_an_engine_refuses_is_a_lint_error_naming_the_element(
+    target: str, case: str, capsys: pytest.CaptureFixture[str], write: Write, request: pytest.FixtureRequest
 ) -> None:
-    changes, code, subject, refusal = MJX_REFUSALS[case]
+    engine: ModuleType = request.getfixturevalue("warp" if target == "mjwarp" else "mjx")
+    changes, code, subject, refusal = (WARP_REFUSALS if target == "mjwarp" else MJX_REFUSALS)[case]
     spec = robot(write, **changes)
     with pytest.raises(NotImplementedError, match=re.escape(refusal)):
-        mjx.put_model(compiled(spec))
-    findings = [f for f in gpu_findings(capsys, spec, "mjx") if f["severity"] == "error"]
+        engine.put_model(compiled(spec))
+    findings = [f for f in gpu_findings(capsys, spec, target) if f["severity"] == "error"]
     assert codes(findings)[0] == (code, "error", subject)
     assert {f["code"] for f in findings} == {code}  # a margin on the base's mesh: both links' pairs
-    assert "put_model refuses" in findings[0]["why"]
+    assert "put_model refuses" in findings[0]["why"] and findings[0]["fix"]
 
 
 def test_a_cylinder_that_cannot_touch_the_box_is_not_reported_and_mjx_accepts_it(

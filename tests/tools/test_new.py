@@ -4,6 +4,7 @@ are in tests/corpus."""
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -14,8 +15,9 @@ import yaml
 
 import assembler
 from assembler.cli import main
+from assembler.files.paths import allowing
 from assembler.registry.catalog import register_specs
-from tests.conftest import TWO_LINK_MJCF
+from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
 NO_ACTUATORS = TWO_LINK_MJCF.split("  <actuator>")[0] + "</mujoco>\n"
 """The two-link arm without its actuators (as dm_control's Jaco arm comes)."""
@@ -132,27 +134,98 @@ def test_a_model_file_mujoco_refuses_is_one_line_naming_it(
     assert not model.with_name("broken.yaml").exists()
 
 
-SCENE = TWO_LINK_MJCF.replace(
-    "  <worldbody>\n",
-    '  <worldbody>\n    <body name="table" pos="1 0 0"><geom type="box" size="0.3 0.3 0.4"/></body>\n',
+ARM_ALONE = "<mujoco>\n" + TWO_LINK_MJCF.split("<worldbody>\n")[1].split("  </worldbody>")[0] + "</mujoco>\n"
+"""The two-link arm's bodies alone, as a file a task scene includes inside its <worldbody>."""
+
+TASK_SCENE = (
+    TWO_LINK_MJCF.split("  <worldbody>")[0]
+    + """  <include file="task_shared.xml"/>
+  <worldbody>
+    <geom name="floor0" type="plane" size="1 1 1"/>
+    <light name="light0" pos="0 0 3" dir="0 0 -1"/>
+    <body name="mocap0" mocap="true" pos="0.6 0 0.4"><geom type="box" size="0.01 0.01 0.01" contype="0" conaffinity="0"/></body>
+    <include file="task_arm.xml"/>
+    <body name="table0" pos="1 0 0.2"><geom type="box" size="0.3 0.3 0.2"/></body>
+  </worldbody>
+  <sensor><framepos name="target_pos" objtype="body" objname="table0"/></sensor>
+"""
+    + TWO_LINK_MJCF.split("  </worldbody>\n")[1]
 )
-"""The two-link arm in a scene with a table beside it (as gymnasium-robotics' task files come)."""
+"""The two-link arm inside a task scene as gymnasium-robotics writes one (Fetch's reach.xml): a floor,
+a light, a table and a mocap body around the arm's <include>, and in an included file the weld that
+holds the hand to the mocap body."""
+
+TASK_SHARED = '<mujoco><equality><weld body1="mocap0" body2="right_hand"/></equality></mujoco>\n'
 
 
-def test_a_scene_file_gets_a_spec_that_says_why_it_does_not_build(
+def _task_scene(write: Callable[[str, str], Path]) -> Path:
+    write("robots/task_arm.xml", ARM_ALONE)
+    write("robots/task_shared.xml", TASK_SHARED)
+    return write("robots/reach.xml", TASK_SCENE)
+
+
+def test_a_task_scene_is_cut_down_to_its_robot_by_the_fixes_new_writes(
     write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
 ) -> None:
-    model = write("robots/scene.xml", SCENE)
-    spec = model.with_name("scene.yaml")
-    assert _new(model, spec) == 1
-    out, err = capsys.readouterr()
-    assert out == f"wrote {spec}: robot Twolink; it does not build as written:\n"
-    line = spec.read_text().splitlines().index(f"mjcf: {model.name}") + 1
-    assert err.splitlines() == [
-        f"{spec}:{line}:7: mjcf: {model}: expected exactly one body in <worldbody>, found 2 ('table', 'base'); "
-        "wrap the parts in one root body"
+    model = _task_scene(write)
+    before = {path: path.read_bytes() for path in model.parent.glob("*.xml")}
+    spec = model.with_name("reach.yaml")
+    assert _new(model, spec) == 0, capsys.readouterr().err
+    fixes = yaml.safe_load(spec.read_text())["mjcf_fixes"]
+    assert [(fix["element"], fix["where"]) for fix in fixes] == [
+        ("geom", {"name": "floor0"}),
+        ("light", {"name": "light0"}),
+        ("body", {"name": "mocap0"}),
+        ("body", {"name": "table0"}),
+        ("weld", {"body1": "mocap0"}),
+        ("framepos", {"name": "target_pos"}),
     ]
-    assert "# decide: this file is a scene: its <worldbody> holds 2 bodies (table, base)" in spec.read_text()
+    assert all(fix["delete"] is True and fix["why"] for fix in fixes)
+    text = spec.read_text()
+    for comment in (
+        "  # geom floor0 (reach.xml:13), beside the robot in <worldbody>",
+        "  # body mocap0 (reach.xml:15), beside the robot in <worldbody>",
+        "  # unnamed weld in <equality> (task_shared.xml:1)",
+    ):
+        assert comment in text
+    (cls,) = register_specs(spec)
+    robot = assembler.create_robot(cls.__name__, idn=0).get_model()
+    alone = mujoco.MjModel.from_xml_string(TWO_LINK_MJCF)
+    assert [robot.body(b).name for b in range(robot.nbody)] == [
+        "world",
+        *("robot0_" + alone.body(b).name for b in range(1, alone.nbody)),
+    ]
+    assert (robot.neq, robot.nmocap, robot.nsensor, robot.nlight) == (0, 0, 0, 0)
+    assert {path: path.read_bytes() for path in model.parent.glob("*.xml")} == before
+
+
+def test_a_scene_element_no_selection_picks_out_alone_is_named_for_the_user(
+    write: Callable[[str, str], Path],
+) -> None:
+    twin = '<body name="table0" pos="1 0 0.2">'
+    model = _task_scene(write)
+    # an unnamed world geom written exactly as a geom of the arm: deleting it would delete the arm's
+    model.write_text(model.read_text().replace(twin, '<geom type="cylinder" size="0.05 0.05"/>\n    ' + twin))
+    write("robots/task_arm.xml", ARM_ALONE.replace('name="base_col" ', ""))
+    spec = model.with_name("reach.yaml")
+    assert _new(model, spec) == 0
+    assert (
+        "# decide: unnamed geom (reach.xml:17) should go too, but no where: selects them" in spec.read_text()
+    )
+
+
+def test_a_hand_placed_in_a_scene_is_reset_to_the_arm_it_is_mounted_on(
+    write: Callable[[str, str], Path],
+) -> None:
+    far = TWO_LINK_MJCF.replace('<body name="base" pos="0 0 0.1">', '<body name="base" pos="1 1.25 0.15">')
+    model = write("hands/reach_hand.xml", far)
+    spec = model.with_name("reach_hand.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["root_pose"] == "reset"
+    assert "# guess: the file places the root body base 1.61 m from the origin" in spec.read_text()
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_gripper(cls.__name__, idn=0).compile_alone()
+    assert np.allclose(compiled.body("gripper0_base").pos, 0)
 
 
 def test_a_name_a_registered_spec_has_is_not_taken_again(write: Callable[[str, str], Path]) -> None:
@@ -200,3 +273,69 @@ def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
     motors = [compiled.actuator(a).name for a in range(compiled.nu)]
     assert motors == ["robot0_joint1", "robot0_left_finger_joint"]
     assert compiled.actuator("robot0_joint1").ctrlrange.tolist() == [-40.0, 40.0]  # the URDF's effort
+
+
+MESH_URDF = MIMIC_URDF.replace(
+    '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>',
+    '<collision><geometry><mesh filename="package://arm_description/meshes/tet.obj"/></geometry></collision>',
+)
+"""The arm with a mesh named through a ROS package that no package root holds (pybullet's xArm6)."""
+
+
+def test_a_package_beside_the_urdf_is_declared_beside_the_spec_new_writes(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    write("robots/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ)
+    model = write("robots/pincer_arm.urdf", MESH_URDF)
+    spec = model.with_name("pincer_arm.yaml")
+    assert _new(model, spec) == 0
+    marker = model.with_name("robot-assembler.toml")
+    assert capsys.readouterr().out.startswith(
+        f"wrote {spec}: robot PincerArm and {marker} (validated and compiled)"
+    )
+    assert marker.read_text().splitlines()[-1] == 'packages = ["arm_description"]'
+    (cls,) = register_specs(spec)
+    assert assembler.create_robot(cls.__name__).get_model().nmesh == 1  # found without ROS_PACKAGE_PATH
+
+
+def test_a_package_beside_a_urdf_in_a_spec_repository_is_the_entry_to_add_to_it(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    declaration = write("lab/robot-assembler.toml", 'allow = ["vendor"]\n')
+    write("lab/vendor/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ)
+    model = write("lab/vendor/pincer_arm.urdf", MESH_URDF)
+    spec = declaration.parent / "specs" / "pincer_arm.yaml"
+    spec.parent.mkdir()
+    assert _new(model, spec) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[1] == (
+        f"to do: package://arm_description is the folder {model.parent / 'arm_description'} beside the URDF: "
+        f'add "vendor/arm_description" to packages in {declaration}'
+    )
+    assert "ROS_PACKAGE_PATH" not in os.environ  # new found it for its own check only
+    declaration.write_text('allow = ["vendor"]\npackages = ["vendor/arm_description"]\n')  # as it says
+    (cls,) = register_specs(spec)
+    assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
+
+
+def test_a_package_beside_a_urdf_no_declaration_can_name_is_the_ros_package_path_to_export(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    folder = write("vendor/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ).parents[1]
+    model = write("vendor/pincer_arm.urdf", MESH_URDF)
+    spec = write("lab/keep.txt", "").with_name("pincer_arm.yaml")  # outside the URDF's folders, as pybullet's
+    assert main(["--allow-path", str(model.parent), "new", str(model), "-o", str(spec)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[1:] == [
+        f"to do: package://arm_description is the folder {folder} beside the URDF: set ROS_PACKAGE_PATH to "
+        "hold it (a spec repository may name only folders inside it)",
+        f"  export ROS_PACKAGE_PATH={folder}",
+    ]
+    assert not spec.with_name("robot-assembler.toml").exists() and "ROS_PACKAGE_PATH" not in os.environ
+    monkeypatch.setenv("ROS_PACKAGE_PATH", str(folder))  # as printed
+    with allowing([model.parent]):
+        (cls,) = register_specs(spec)
+        assert assembler.create_robot(cls.__name__).get_model().nmesh == 1

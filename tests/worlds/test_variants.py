@@ -9,11 +9,20 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import pytest
 
+import assembler
+from assembler.build.service import wait_for_writes
 from assembler.cli import main
+from assembler.worlds.variants import Grid, VariantPlan, write_variants
+from assembler.worlds.variants.run import counts as variant_counts
+from assembler.worlds.variants.xml_text import XmlText
+from tests.build.test_patchable import CASES, Write, _register_declared
+from tests.build.test_patched_api import _differences, _no_compile
+from tests.conftest import use_private_cache
 
 
 def variants(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
@@ -269,9 +278,11 @@ def _children(pid: int) -> set[int]:
 def test_workers_exit_when_the_run_is_killed_and_an_interrupted_run_leaves_a_true_manifest(
     tmp_path: Path,
 ) -> None:
-    values = ",".join(str(0.1 + index / 1000) for index in range(300))
+    # A description per variant: not a patchable field, so every variant is compiled and the run is
+    # still building when it is interrupted (a patchable grid is written in milliseconds per variant).
+    values = ",".join(f"run{index}" for index in range(300))
     command = subprocess.Popen(
-        [sys.executable, "-c", CLI, "variants", "Biped", "--grid", f"joint_defaults.damping={values}"]
+        [sys.executable, "-c", CLI, "variants", "Biped", "--grid", f"description={values}"]
         + ["--jobs", "2", "-o", "out"],
         cwd=tmp_path,
         stdout=subprocess.DEVNULL,
@@ -302,3 +313,79 @@ def _is_running(pid: int) -> bool:
     except OSError:
         return False
     return state != "Z"
+
+
+def _one_variant(robot: str, overrides: dict[str, Any]) -> VariantPlan:
+    """A plan whose one variant is ``robot`` with ``overrides`` (each a one-value grid)."""
+    return VariantPlan(robot, grids=tuple(Grid(key, (value,)) for key, value in overrides.items()), jobs=1)
+
+
+@pytest.mark.parametrize(
+    ("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)]
+)
+def test_each_variant_file_loads_to_the_model_of_its_full_compile(
+    write: Write, tmp_path: Path, robot: str, overrides: dict[str, Any]
+) -> None:
+    _register_declared(write)
+    edited = variant_counts.edited
+    run = write_variants(_one_variant(robot, overrides), tmp_path / "out")
+    assert [result.problems for result in run.results] == [()]
+    written = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / str(run.results[0].file)))
+    compiled = assembler.assemble(robot, overrides=overrides).get_model(cache=False, store=False)
+    for model in (written, compiled):  # MuJoCo's writer writes a sphere's one size; the rest is unused
+        model.site_size[model.site_type == mujoco.mjtGeom.mjGEOM_SPHERE, 1:] = 0.0
+    assert _differences(written, compiled) == []
+    by_text = not any(key.startswith("bodies") for key in overrides)  # bodies: scales are compiled
+    assert variant_counts.edited == edited + by_text
+
+
+@pytest.mark.parametrize(
+    ("grid", "attribute", "refused"),
+    [
+        ("actuators[0].ctrlrange=[1, 1],[-1, 1]", "ctrlrange", "1 1"),
+        ("actuators[0].forcerange=[5, -5],[-5, 5]", "forcerange", "5 -5"),
+    ],
+)
+def test_a_value_mujoco_refuses_is_refused_before_writing_and_the_edited_text_would_not_load(
+    write: Write,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    grid: str,
+    attribute: str,
+    refused: str,
+) -> None:
+    _register_declared(write)
+    out = tmp_path / "out"
+    code, _, err = variants(capsys, "Declared", "--grid", grid, "-o", str(out), "--jobs", "1")
+    assert code == 1 and err.split("\n")[1].startswith("variant 0 (")  # reported, by the schema's check
+    assert [line["index"] for line in manifest(out)] == [1]
+    assert sorted(files(out)) == ["Declared_0001.xml", "manifest.jsonl"]
+    # The same value put into the written text: MuJoCo's compiler refuses it too.
+    text = XmlText((out / "Declared_0001.xml").read_text()).edited(
+        {("general", "robot0_shoulder"): {attribute: refused}}
+    )
+    with pytest.raises(ValueError):
+        mujoco.MjModel.from_xml_string(text)
+
+
+def test_a_grid_of_joint_values_is_written_in_this_process_by_default(tmp_path: Path) -> None:
+    edited = variant_counts.edited
+    plan = VariantPlan("Sparrow7", grids=(Grid.parse("joint_defaults.frictionloss=0.1,0.2,0.3"),))
+    run = write_variants(plan, tmp_path / "out")
+    assert len(run.written) == 3 and run.distinct == 3
+    assert variant_counts.edited == edited + 3  # here, not in worker processes
+
+
+def test_variants_of_a_robot_whose_model_and_xml_are_cached_compile_nothing(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    use_private_cache(tmp_path / "cache", monkeypatch)
+    assembler.assemble("Finch6").get_xml()  # an entry with the model and its XML, as `build -o` leaves
+    wait_for_writes()
+    overrides = {"joint_defaults.damping": 0.33}
+    compiled = assembler.assemble("Finch6", overrides=overrides).get_model(cache=False, store=False)
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        run = write_variants(_one_variant("Finch6", overrides), tmp_path / "out")
+    written = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / str(run.results[0].file)))
+    assert _differences(written, compiled) == []

@@ -41,11 +41,15 @@ Vec4 = tuple[FiniteFloat, FiniteFloat, FiniteFloat, FiniteFloat]
 
 class StrictModel(BaseModel):
     """Base of all spec models: unknown keys are errors, values are frozen after validation,
-    and each field's docstring becomes its description in the JSON Schema."""
+    and each field's docstring becomes its description in the JSON Schema (given there, by
+    :mod:`assembler.spec.schema.json_schema`, not at class creation: see its ``_describe_fields``)."""
 
     model_config = ConfigDict(
         extra="forbid",
         frozen=True,
-        use_attribute_docstrings=True,
         validate_default=True,
+        # A model's validator is built when it first validates, not when its module is imported:
+        # a process that assembles a robot never pays for the scene and experiment models, nor
+        # for a nested model's own validator besides the copy inside the spec that holds it.
+        defer_build=True,
     )

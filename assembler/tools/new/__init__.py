@@ -17,14 +17,17 @@ from typing import Literal
 
 from assembler.errors import AssemblerError
 from assembler.files.paths import PACKAGE_SCHEME, display_path
+from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
 from assembler.registry.catalog import load_shipped_specs
 from assembler.registry.lookup import registered_names
 from assembler.tools.new.decisions import gripper_entries, robot_entries
 from assembler.tools.new.entries import Entry, spec_text
 from assembler.tools.new.naming import camel_case, free_name, name_source
-from assembler.tools.new.reading import ModelFile, read_model_file, spec_reference
+from assembler.tools.new.packages import BesidePackage, declaration, found_packages, packages_beside
+from assembler.tools.new.reading import ModelFile, file_format, read_model_file, spec_reference
 from assembler.tools.new.robosuite_names import robosuite_names
+from assembler.tools.new.scene import scene_cut, scene_entry
 from assembler.tools.new.tree import read_tree
 
 Kind = Literal["robot", "gripper"]
@@ -45,6 +48,8 @@ class NewSpec:
     text: str
     name: str
     kind: Kind
+    packages: tuple[BesidePackage, ...] = ()
+    """ROS packages the URDF names that only a folder beside it holds, and what the user adds."""
 
 
 def _kind(file: ModelFile) -> tuple[Kind, str]:
@@ -71,8 +76,9 @@ def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
     roots = [model.body(b).name for b in range(1, model.nbody) if model.body_parentid[b] == 0]
     if len(roots) > 1:
         entry.decide(
-            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}); a spec's "
-            "file holds one robot under one root body: point it at a file of the robot alone"
+            f"this file is a scene: its <worldbody> holds {len(roots)} bodies ({', '.join(roots)}) that "
+            "mjcf_fixes could not cut down to one; a spec's file holds one robot under one root body: "
+            "point it at a file of the robot alone"
         )
     if not spec_reference(file, spec_path.parent).startswith(PACKAGE_SCHEME) and not _below(
         file.path, spec_path.parent
@@ -84,6 +90,15 @@ def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
     return entry
 
 
+def _package_notes(entry: Entry, packages: list[BesidePackage]) -> Entry:
+    for package in packages:
+        if package.declared == "beside the spec":
+            entry.guess(package.todo)
+        else:
+            entry.decide(package.todo)
+    return entry
+
+
 def _below(path: Path, folder: Path) -> bool:
     return path.resolve().is_relative_to(folder.resolve())
 
@@ -91,11 +106,20 @@ def _below(path: Path, folder: Path) -> bool:
 def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> NewSpec:
     """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
     are relative to its folder); ``kind`` robot or gripper, guessed when None."""
-    file = read_model_file(model_path)
+    packages = (
+        packages_beside(model_path.resolve(), spec_path.parent) if file_format(model_path) == "urdf" else []
+    )
+    with found_packages(packages):
+        file = read_model_file(model_path)
+    cut = None
+    if file.format == "mjcf":
+        cut = scene_cut(file.path, frozenset(Path(p) for p, _, _ in file.source.files), file.model)
+        if cut is not None and cut.cuts:
+            file = read_model_file(model_path, cut.fixes)
     guessed_kind, why = _kind(file)
     chosen: Kind = kind or guessed_kind
     load_shipped_specs()
-    source = name_source(file.source.pristine.modelname, file.path)
+    source = name_source(file.source.pristine.modelname, file.path, scene=cut is not None)
     taken = {*registered_names(), *robosuite_names()}
     name = free_name(camel_case(source), taken, "Hand" if chosen == "gripper" else "Arm")
     named = Entry("name", name).guess(f"from '{source}'; the registry and class name, yours to choose")
@@ -110,13 +134,14 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> New
     entries += [
         named,
         Entry("description", f"{source} from {Path(file.reference).name}, as `assembler new` read it."),
-        _file_entry(file, spec_path),
+        _package_notes(_file_entry(file, spec_path), packages),
+        *([scene_entry(cut)] if cut is not None else []),
     ]
     tree = read_tree(file.model, hand=chosen == "gripper")
     entries += gripper_entries(file, tree) if chosen == "gripper" else robot_entries(file, tree)
     if chosen == "robot" and kind is None:
         entries[0].guess(f"a robot arm: {why}; a hand: assembler new --kind gripper")
-    return NewSpec(spec_text(_header(file), entries), name, chosen)
+    return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages))
 
 
 def snake_case(name: str) -> str:
@@ -133,5 +158,13 @@ def write_new_spec(
     target = spec_path or Path(snake_case(written.name) + ".yaml")
     if target.exists() and not force:
         raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")
+    toml = declaration(written.packages)
+    marker = target.parent / MARKER
+    if toml is not None and marker.exists():
+        raise AssemblerError(
+            f"{display_path(marker)}: exists; add what new would write to it: {toml.splitlines()[-1]}"
+        )
     write_atomically(target, written.text)
+    if toml is not None:
+        write_atomically(marker, toml)
     return written, target

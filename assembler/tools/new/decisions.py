@@ -7,8 +7,10 @@ from __future__ import annotations
 from typing import Any
 
 import mujoco
+import numpy as np
 
 from assembler.robosuite.conventions import has_force_range, is_bridge_servo
+from assembler.tools.lint.gripper_pose import ROOT_OFFSET_LIMIT
 from assembler.tools.new.entries import Entry
 from assembler.tools.new.physics import home_pose, posed_data, scalar_joints, torque_limit
 from assembler.tools.new.reading import ModelFile
@@ -188,6 +190,18 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     return entries
 
 
+def root_pose_entry(file: ModelFile, root: str) -> Entry | None:
+    """``root_pose: reset`` for a hand whose file places its root far from the origin (in a scene),
+    where it would float away from the arm it is mounted on (lint RA102)."""
+    distance = float(np.linalg.norm(posed_data(file.model).xpos[file.model.body(root).id]))
+    if distance <= ROOT_OFFSET_LIMIT:
+        return None
+    return Entry("root_pose", "reset").guess(
+        f"the file places the root body {root} {distance:.3g} m from the origin (its place in a scene), "
+        f"more than a mount offset ({ROOT_OFFSET_LIMIT} m): reset puts it at the hand it is mounted on"
+    )
+
+
 def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     """The fields of a hand's spec after its kind, name and file."""
     entries = [
@@ -195,6 +209,8 @@ def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
             "the root body; set the body at the grip point if there is one (robosuite adds an eef body here)"
         )
     ]
+    pose_of_root = root_pose_entry(file, tree.eef_body)
+    entries += [pose_of_root] if pose_of_root else []
     sites = Entry("important_sites", {"grip_site": tree.grip_site} if tree.grip_site else {})
     if tree.grip_site:
         sites.guess(f"the site {tree.grip_site} is named like a grip point")

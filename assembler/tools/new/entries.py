@@ -22,6 +22,9 @@ class Entry:
     key: str
     value: Any
     notes: list[str] = field(default_factory=list)
+    item_notes: list[str] = field(default_factory=list)
+    """For a list of mappings: one comment per item, written above it, the items then written as
+    blocks (``mjcf_fixes``: what each deletion removes and where it is)."""
 
     def guess(self, text: str) -> Entry:
         self.notes.append(f"{GUESS}: {text}")
@@ -50,7 +53,19 @@ def _wrap(text: str, width: int = 106) -> list[str]:
     return [f"# {item}" for item in lines]
 
 
-def _value_lines(key: str, value: Any) -> list[str]:
+def _block_lines(key: str, items: list[dict[str, Any]], notes: list[str]) -> list[str]:
+    lines = [f"{key}:"]
+    for item, note in zip(items, notes, strict=True):
+        lines += [f"  {line}" for line in _wrap(note, 104)]
+        for index, (name, value) in enumerate(item.items()):
+            lines.append(("  - " if index == 0 else "    ") + f"{name}: {_flow(value)}")
+    return lines
+
+
+def _value_lines(entry: Entry) -> list[str]:
+    key, value = entry.key, entry.value
+    if entry.item_notes:
+        return _block_lines(key, value, entry.item_notes)
     if isinstance(value, list) and value and all(isinstance(item, dict) for item in value):
         return [f"{key}:", *(f"  - {_flow(item)}" for item in value)]
     if isinstance(value, dict) and value and any(isinstance(item, (list, dict)) for item in value.values()):
@@ -66,5 +81,5 @@ def spec_text(header: list[str], entries: list[Entry]) -> str:
             lines.append("")
             for note in entry.notes:
                 lines += _wrap(note)
-        lines += _value_lines(entry.key, entry.value)
+        lines += _value_lines(entry)
     return "\n".join(lines) + "\n"

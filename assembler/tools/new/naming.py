@@ -23,11 +23,12 @@ def camel_case(text: str) -> str:
     return name[:64]
 
 
-def name_source(model_name: str, path: Path) -> str:
-    """What the name is made from: the file's model name, else its stem, else its folder's name."""
+def name_source(model_name: str, path: Path, scene: bool = False) -> str:
+    """What the name is made from: the file's model name, else its stem, else its folder's name (a
+    task scene's stem names the task: gymnasium-robotics' ``fetch/reach.xml`` is the Fetch)."""
     if model_name and model_name != MUJOCO_UNNAMED:
         return model_name
-    if path.stem.lower() not in GENERIC_STEMS:
+    if not scene and path.stem.lower() not in GENERIC_STEMS:
         return path.stem
     return path.parent.name or path.stem
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
@@ -16,6 +17,7 @@ import mujoco
 from assembler.errors import MjcfError
 from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, package_root
 from assembler.mjcf.source import MjcfSource, load_mjcf
+from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
 
 Format = Literal["mjcf", "urdf"]
@@ -71,10 +73,12 @@ def _compile(source: MjcfSource, shown: str) -> mujoco.MjModel:
         raise MjcfError(f"{shown}: MuJoCo refuses it: {' '.join(str(error).split())}") from None
 
 
-def _read(path: Path, reference: str, fmt: Format) -> tuple[MjcfSource, mujoco.MjModel, bool]:
+def _read(
+    path: Path, reference: str, fmt: Format, fixes: Sequence[MjcfFix]
+) -> tuple[MjcfSource, mujoco.MjModel, bool]:
     shown = display_path(path)
     if fmt == "mjcf":
-        source = load_mjcf(reference)
+        source = load_mjcf(reference, fixes)
         return source, _compile(source, shown), False
     source = load_urdf(reference)
     try:
@@ -86,9 +90,9 @@ def _read(path: Path, reference: str, fmt: Format) -> tuple[MjcfSource, mujoco.M
     return balanced, _compile(balanced, shown), True
 
 
-def read_model_file(path: Path) -> ModelFile:
+def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
     """The MJCF or URDF at ``path``, read as a spec naming it would read it (its own folder allowed
-    when it is no package's), and compiled."""
+    when it is no package's; an MJCF repaired by ``fixes``), and compiled."""
     path = path.resolve()
     if not path.is_file():
         raise MjcfError(f"{display_path(path)}: no such file; give an MJCF (.xml) or URDF (.urdf) file")
@@ -96,5 +100,5 @@ def read_model_file(path: Path) -> ModelFile:
     package = python_package_reference(path)
     reference = package or str(path)
     with allowing([] if package else [path.parent]):
-        source, model, balanced = _read(path, reference, fmt)
+        source, model, balanced = _read(path, reference, fmt, fixes)
     return ModelFile(path, fmt, reference, source, model, balanced)

@@ -104,7 +104,8 @@ class VariantPlan:
     """Whether each variant's compiled model is kept in the cache (``--cache``): a sweep's models
     are rarely asked for again, and each can be tens of megabytes."""
     jobs: int | None = None
-    """Worker processes (None: one per core)."""
+    """Worker processes (None: one per core, or this process alone when every varied field is written
+    as an edit of the robot's XML, where a worker's own compile of the robot costs more than it saves)."""
 
     def __post_init__(self) -> None:
         keys = [g.key for g in self.grids] + [d.key for d in self.draws]

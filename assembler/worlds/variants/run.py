@@ -1,6 +1,8 @@
 """Building the variants of a plan into a folder, in parallel, with a manifest that never lies.
 
-Every variant is compiled before its file is written (atomically); ``manifest.jsonl`` lists the
+Every variant is a model MuJoCo accepts before its file is written (atomically): either compiled,
+or (most sweeps) written as an edit of the robot's XML, compiled once per process
+(:mod:`~assembler.worlds.variants.patched` says how that keeps the guarantee); ``manifest.jsonl`` lists the
 written ones (index, file, sha256, overrides). The folder's previous manifest is removed before
 anything is written and the new one is written once, at the end or when the run is interrupted,
 listing only files this run wrote whole: at no moment does a manifest name a file that is not
@@ -12,6 +14,7 @@ dies, so a killed run leaves no orphans.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -28,6 +31,9 @@ from assembler.errors import AssemblerError, Problem
 from assembler.files.writing import cannot_write, make_folder, write_atomically
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
+from assembler.registry.lookup import robot_class
+from assembler.spec.documents import parse_overrides
+from assembler.worlds.variants.patched import TEXT_SECTIONS, PatchedXml
 from assembler.worlds.variants.plan import VariantPlan
 
 MANIFEST = "manifest.jsonl"
@@ -81,9 +87,65 @@ class VariantRun:
         return len({result.sha256 for result in self.written})
 
 
+@dataclass
+class WrittenCounts:
+    """How this process's variants were made, for tests and the benchmark."""
+
+    edited: int = 0
+    """Written as the robot's XML with the variant's values (no compile of their own)."""
+
+    compiled: int = 0
+    """Built and compiled in full (a structural change, ``bodies:`` scales, ``--cache``)."""
+
+
+counts = WrittenCounts()
+
+
+@dataclass
+class _Patcher:
+    """This process's :class:`PatchedXml` of the robot being varied (one at a time): made once for
+    every plan that varies the same robot with the same ``--set`` overrides."""
+
+    robot: tuple[Any, ...] | None = None
+    patched: PatchedXml | None = None
+
+    def of(self, plan: VariantPlan, meshes: bool) -> PatchedXml | None:
+        """The plan's robot compiled once, or None when its variants are compiled (``--cache`` keeps
+        each variant's compiled model, so those are compiled)."""
+        if plan.store:
+            return None
+        meshes = plan.cache and meshes
+        cls = robot_class(plan.robot)  # the class registered now: a spec registered again is another
+        robot = (cls, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
+        if self.robot != robot:
+            self.robot, self.patched = robot, None
+            fixed = parse_overrides(plan.fixed, "--set ")
+            with contextlib.suppress(AssemblerError):  # the robot alone fails: each variant says why
+                self.patched = PatchedXml.of(
+                    plan.robot, plan.idn, plan.base, dict(plan.grippers), fixed, plan.cache, meshes
+                )
+        return self.patched
+
+
+_patcher = _Patcher()
+
+
+def edited_by_text(plan: VariantPlan) -> bool:
+    """True when every field ``plan`` varies is one the robot's XML is edited for (no variant of
+    its own compiled), unless a value turns out structural (see :mod:`.patched`)."""
+    return not plan.store and all(key.split(".")[0].split("[")[0] in TEXT_SECTIONS for key in plan.varied())
+
+
 def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True) -> str:
-    """The compiled, emitted MJCF of one variant (nothing written); ``meshes`` False reads meshes
+    """The emitted MJCF of one variant (nothing written): the robot's XML with the variant's values
+    when a patch describes the variant, else compiled and emitted; ``meshes`` False reads meshes
     from their files (see :data:`FROM_FILES_AT`)."""
+    patched = _patcher.of(plan, meshes)
+    xml = patched.xml(plan.overrides(variant)) if patched is not None else None
+    if xml is not None:
+        counts.edited += 1
+        return xml
+    counts.compiled += 1
     robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=plan.overrides(variant))
     return robot.get_xml(cache=plan.cache, store=plan.store, meshes=meshes)
 
@@ -155,6 +217,8 @@ def run_variants(plan: VariantPlan, folder: str | Path) -> list[VariantResult]:
         (target / MANIFEST).unlink(missing_ok=True)  # the earlier run's: its files are about to change
     variants = plan.variant_overrides()
     workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(variants)))
+    if plan.jobs is None and edited_by_text(plan):
+        workers = 1  # each variant costs milliseconds; a worker's own compile of the robot costs more
     from_store = len(variants) < FROM_FILES_AT * workers
     work = [(plan, index, variant, target, from_store) for index, variant in enumerate(variants)]
     results: list[VariantResult] = []

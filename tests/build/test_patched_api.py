@@ -1,0 +1,147 @@
+"""``assemble(robot, overrides=...).get_model()`` with the plain robot cached: patched, not compiled, and
+equal to the full compile in every model field; a structural override is compiled, with the reason."""
+
+from __future__ import annotations
+
+import logging
+import os
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+import assembler
+from assembler.build import service
+from assembler.build.service import wait_for_writes
+from tests.build.test_patchable import CASES, Write, _model_arrays, _register_declared
+from tests.conftest import use_private_cache
+from tests.models.test_physical import CUBE_OBJ, MESH_MJCF
+
+
+@pytest.fixture(autouse=True)
+def private_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    return use_private_cache(tmp_path / "cache", monkeypatch)
+
+
+def _settled(folder: Path) -> None:
+    """Date every file under ``folder`` ten seconds back: the cache keeps no model made from files
+    modified in the last seconds (tests/cache/test_cache.py's ``edit`` does the same)."""
+    then = time.time() - 10
+    for path in folder.rglob("*"):
+        if path.is_file():
+            os.utime(path, (then, then))
+
+
+def _no_compile(monkeypatch: pytest.MonkeyPatch) -> None:
+    """From here on, a compile or a mesh decode in this process fails the test."""
+
+    def refuse(*_: object) -> None:
+        raise AssertionError("compiled or decoded a mesh")
+
+    for name in ("compile_from_store", "compile_spec", "compile_with_home"):
+        monkeypatch.setattr(f"assembler.build.compile.{name}", refuse)
+    monkeypatch.setattr("assembler.cache.mesh_data.decode", refuse)
+    monkeypatch.setattr("assembler.cache.mesh_fill.decode", refuse)
+
+
+def _differences(ours: Any, theirs: Any) -> list[str]:
+    a, b = _model_arrays(ours), _model_arrays(theirs)
+    assert a.keys() == b.keys()
+    return [
+        name
+        for name in b
+        if a[name].shape != b[name].shape or not np.allclose(a[name], b[name], rtol=1e-10, atol=1e-10)
+    ]
+
+
+@pytest.mark.parametrize(
+    ("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)]
+)
+def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
+    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
+) -> None:
+    _register_declared(write)
+    _settled(tmp_path)
+    compiled = assembler.assemble(robot, overrides=overrides).get_model(cache=False, store=False)
+    assembler.assemble(robot).get_model()
+    wait_for_writes()
+    patched_before = service.counts.patched
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        model = assembler.assemble(robot, overrides=overrides).get_model()
+    assert service.counts.patched == patched_before + 1
+    assert _differences(model, compiled) == []
+
+
+def test_a_patched_variant_is_not_stored_and_asked_again_is_patched_again(
+    private_cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    overrides = {"joint_defaults.frictionloss": 0.07}
+    assembler.assemble("Sparrow7").get_model()
+    wait_for_writes()
+    entries = sorted(private_cache.glob("*.mjb"))
+    first = assembler.assemble("Sparrow7", overrides=overrides).get_model()
+    wait_for_writes()
+    assert sorted(private_cache.glob("*.mjb")) == entries  # only the plain robot's entry
+    patched = service.counts.patched
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        again = assembler.assemble("Sparrow7", overrides=overrides).get_model()
+    assert service.counts.patched == patched + 1
+    assert np.array_equal(again.dof_frictionloss, first.dof_frictionloss)
+    assert again.joint("robot0_joint2").frictionloss[0] == pytest.approx(0.07)
+
+
+def test_a_structural_override_is_compiled_and_the_reason_is_logged(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    assembler.assemble("Sparrow7").get_model()
+    wait_for_writes()
+    patched = service.counts.patched
+    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+        model = assembler.assemble("Sparrow7", overrides={"remove_free_joint": True}).get_model()
+    assert service.counts.patched == patched
+    assert model.nbody > 0
+    assert "Sparrow70 compiled: remove_free_joint: not a patchable field" in caplog.text
+
+
+def test_a_variant_of_a_robot_not_in_the_cache_is_compiled_and_says_why(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    patched = service.counts.patched
+    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+        model = assembler.assemble("Finch6", overrides={"joint_defaults.damping": 0.2}).get_model()
+    assert service.counts.patched == patched
+    assert model.joint("robot0_joint1").damping[0] == pytest.approx(0.2)
+    assert "the robot without its overrides is not in the model cache" in caplog.text
+
+
+def test_api_joint_edits_are_compiled_not_patched() -> None:
+    assembler.assemble("Sparrow7").get_model()
+    wait_for_writes()
+    robot = assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": 0.3})
+    robot.set_joint_attribute("armature", np.full(7, 0.2))
+    patched = service.counts.patched
+    model = robot.get_model()
+    assert service.counts.patched == patched
+    assert model.joint("robot0_joint4").armature[0] == pytest.approx(0.2)
+
+
+def test_a_robot_with_meshes_is_patched_without_reading_or_decoding_a_mesh(
+    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write("m/block.obj", CUBE_OBJ)
+    write("m/meshy.xml", MESH_MJCF)
+    assembler.register_specs(write("m/meshy.yaml", "name: Meshy\nmjcf: meshy.xml\n"))
+    _settled(tmp_path)
+    overrides = {"joint_defaults.damping": 0.8, "geoms": [{"match": "*", "friction": [0.4, 0.01, 0.002]}]}
+    compiled = assembler.assemble("Meshy", overrides=overrides).get_model(cache=False, store=False)
+    assembler.assemble("Meshy").get_model()
+    wait_for_writes()
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        model = assembler.assemble("Meshy", overrides=overrides).get_model()
+    assert model.nmesh > 0 and np.array_equal(model.mesh_vert, compiled.mesh_vert)
+    assert _differences(model, compiled) == []
