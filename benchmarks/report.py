@@ -106,9 +106,10 @@ EXPLANATIONS = [
     "- *5 variants*: a sweep of joint damping values in one new process per side, per variant; and",
     "  `assembler variants --jobs 2` against `--jobs 1`.",
     "- *6*: scenes of N robots per robot, and the same robot loaded again in one process.",
-    "- *environment* (no target): `robosuite.make` and hard `env.reset()` with robosuite's robot, gripper",
+    "- *environment* (target <= 1x): `robosuite.make` and hard `env.reset()` with robosuite's robot, gripper",
     "  and base built from our specs (`assembler.robosuite.replace_robosuite()`), against robosuite's own",
-    "  classes, each side in new processes; the whole-process figure is make plus five resets.",
+    "  classes, each side in new processes, our part files kept from an earlier process; the",
+    "  whole-process figure is make plus five resets; each note gives the CPU-time ratio.",
 ]
 
 REASONS: dict[str, str] = {

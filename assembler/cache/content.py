@@ -24,7 +24,7 @@ import os
 import re
 import tempfile
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import asdict
 from pathlib import Path
 
@@ -127,13 +127,20 @@ def _write_whole(target: Path, data: bytes) -> None:
 
 
 def recorded_text_file(
-    folder: Path, key: str, read: Iterable[str], emit: Callable[[], str], suffix: str
+    folder: Path,
+    key: str,
+    read: Iterable[str],
+    emit: Callable[[], str],
+    suffix: str,
+    read_earlier: Callable[[], Mapping[str, tuple[int, int]]] | None = None,
 ) -> Path:
     """The file of the text ``emit()`` makes for ``key`` (a digest of everything that decides the
     text but the files it reads), kept across processes: when the record of ``key`` finds every file
     in ``read`` unchanged (:func:`~assembler.cache.file_state.check_all`) and its text file whole,
     nothing is emitted or written. Otherwise the text is emitted, written (:func:`text_file`) and
-    recorded with the files' states; a file changed meanwhile means no record."""
+    recorded with the files' states; a file changed meanwhile means no record. ``read`` is consumed
+    only then, before ``read_earlier()``: files read before the emission (a part's MJCF, parsed when
+    the part was made) with their (size, mtime_ns) then, a change since then being a change."""
     record = folder / f"record-{key}.json"
     with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
         data = json.loads(record.read_text(encoding="utf-8"))
@@ -142,7 +149,7 @@ def recorded_text_file(
         if target.parent == folder and check_all(states) is not None and target.exists() and _whole(target):
             return _used(target)
     files = list(read)
-    recorder = Recorder(files)
+    recorder = Recorder(files, read_earlier() if read_earlier is not None else None)
     target = text_file(folder, emit(), suffix)
     recorded = recorder.result()
     if recorded is not None:

@@ -28,7 +28,8 @@ class PartInputs:
     """robot, base or gripper."""
 
     classes: tuple[str, ...]
-    """``module.qualname`` of the part's class and each of its bases: the code that builds it."""
+    """``module.qualname`` of the part's class, each of its bases and its adaptation, if any (see
+    ``PartModel.adaptation``): the code that builds it."""
 
     spec_json: str
     """The validated spec (``extends`` merged, overrides applied) as canonical JSON."""

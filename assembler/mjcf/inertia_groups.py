@@ -16,7 +16,7 @@ def _weighs(geom: mujoco.MjsGeom) -> bool:
     return bool(geom.mass > 0 if not math.isnan(geom.mass) else geom.density > 0)
 
 
-def weighed_by_other_groups(mjspec: mujoco.MjSpec, groups: tuple[int, int] = (0, 0)) -> list[str]:
+def weighed_by_other_groups(mjspec: mujoco.MjSpec, groups: tuple[int, int]) -> list[str]:
     """The bodies of ``mjspec`` (names, in document order) without an explicit inertial that have a
     massive geom outside ``groups``: their inferred mass changes when only ``groups`` count."""
     low, high = groups

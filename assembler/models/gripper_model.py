@@ -79,10 +79,10 @@ class GripperModel(PartModel):
             field = FieldPath(("root_body",))
             raise MjcfError([Problem(p.message, self.locate(field), field) for p in error.problems]) from None
 
-    def part_mjspec(self) -> mujoco.MjSpec:
-        """The part's spec (see :meth:`PartModel.part_mjspec`), its root at the origin if the spec
+    def own_mjspec(self) -> mujoco.MjSpec:
+        """The part's spec (see :meth:`PartModel.own_mjspec`), its root at the origin if the spec
         asks for it (``root_pose: reset``)."""
-        mjspec = super().part_mjspec()
+        mjspec = super().own_mjspec()
         if self.spec.root_pose == "reset":
             place_root(mjspec, (0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
         return mjspec

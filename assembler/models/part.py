@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import warnings
+from collections.abc import Callable
 from typing import Any, ClassVar
 
 import mujoco
@@ -40,6 +41,9 @@ from assembler.urdf.postprocess import unbalanced_inertias
 
 FloatArray = NDArray[np.float64]
 
+Adaptation = Callable[["PartModel", mujoco.MjSpec], mujoco.MjSpec]
+"""A consumer's edit of a part's spec (see :attr:`PartModel.adaptation`)."""
+
 _WARNED: dict[Any, Any] = {}
 """The warnings already shown (Python's registry for warn_explicit), so each is shown once."""
 
@@ -63,6 +67,10 @@ class PartModel(metaclass=RegisteringMeta):
         self.idn = idn
         self.joint_edits: list[JointEdit] = []
         """``set_joint_attribute`` calls, in order (they are part of what the cache keys on)."""
+        self.adaptation: Adaptation | None = None
+        """The last edit of this part's spec for the one consumer it is made for, or None: the robosuite
+        bridge's names and drives (:func:`assembler.robosuite.parts.robosuite_part`). Applied by
+        :meth:`part_mjspec`, named in :meth:`part_inputs`."""
         self._prepared: PreparedPart | None = None
 
     # ----- the spec and its problems ----------------------------------------------------------
@@ -166,6 +174,11 @@ class PartModel(metaclass=RegisteringMeta):
         return self.prepared().physical
 
     def part_mjspec(self) -> mujoco.MjSpec:
+        """The spec this part attaches into an assembly: :meth:`own_mjspec`, then its ``adaptation``."""
+        mjspec = self.own_mjspec()
+        return mjspec if self.adaptation is None else self.adaptation(self, mjspec)
+
+    def own_mjspec(self) -> mujoco.MjSpec:
         """A fresh copy of the prepared spec, with joint values, the ``bodies:``/``geoms:`` entries
         applied, and robosuite's collision colours where the spec asks for them
         (``collision_colour: robosuite``)."""
@@ -186,7 +199,8 @@ class PartModel(metaclass=RegisteringMeta):
 
     def part_inputs(self) -> PartInputs:
         """What this part contributes to an assembly's cache key (no MJCF is read)."""
-        classes = tuple(f"{cls.__module__}.{cls.__qualname__}" for cls in type(self).__mro__)
+        code: list[Any] = [*type(self).__mro__, *([self.adaptation] if self.adaptation is not None else [])]
+        classes = tuple(f"{item.__module__}.{item.__qualname__}" for item in code)
         spec_made = all(
             cls is object or cls.__module__.startswith("assembler.") for cls in type(self).__mro__
         )

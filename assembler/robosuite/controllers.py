@@ -26,10 +26,7 @@ from robosuite.controllers.composite import composite_controller_factory as fact
 from assembler.errors import SpecError
 from assembler.files.paths import confine, spec_homes
 from assembler.models import REGISTERED_BASES, ManipulatorModel
-from assembler.robosuite.conventions import DRIVEN_GROUPS, base_in_robosuite, robot_type_name
-from assembler.spec.fieldpath import FieldPath
-
-CONTROLLER = FieldPath(("robosuite", "controller"))
+from assembler.robosuite.conventions import CONTROLLER, DRIVEN_GROUPS, base_in_robosuite, robot_type_name
 
 ROBOSUITE_CONFIGS = Path(robosuite.__file__).parent / "controllers" / "config"
 """robosuite's configuration folder: ``robots/default_<robot>.json`` and ``default/composite/<type>.json``."""

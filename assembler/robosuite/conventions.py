@@ -13,6 +13,7 @@ from collections.abc import Sequence
 import mujoco
 
 from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import RobotSpec
 
 BY_BASE_TYPE: dict[str, str] = {
@@ -32,6 +33,16 @@ DRIVEN_GROUPS: dict[str, tuple[str, ...]] = {
     "LeggedRobot": ("right", "left", "torso", "head", "legs"),
 }
 """The joint groups each Robot class drives with controllers that write torques into ``ctrl``."""
+
+ACTUATION = FieldPath(("robosuite", "actuation"))
+"""The spec field saying how robosuite's controllers drive a robot's position servos."""
+
+CONTROLLER = FieldPath(("robosuite", "controller"))
+"""The spec field naming a robot's controller configuration for robosuite."""
+
+INERTIA_GROUPS = (0, 0)
+"""The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias
+(``<compiler inertiagrouprange="0 0">``)."""
 
 EEF = "eef"
 GRIP_SITE = "grip_site"

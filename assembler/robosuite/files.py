@@ -1,19 +1,43 @@
 """MJCF text written for robosuite, which reads models from files: files named by their content in
 the cache's ``robosuite/`` folder (:mod:`assembler.cache.content`), kept across processes and
-verified on every use: a warm ``robosuite.make`` writes nothing, and a part file edited in the cache
-is made again, never simulated. With the cache off they go to a folder of the process's own."""
+verified on every use. Every hard reset of an environment rebuilds every model, and the text of an
+unchanged part does not change: a warm ``robosuite.make`` builds no part, emits and writes nothing,
+and a part file edited in the cache is made again, never simulated. With the cache off they go to a
+folder of the process's own.
+
+What the emission warned (an :class:`~assembler.errors.AssemblerWarning`: grip frames added, bodies
+robosuite's world weighs differently) travels in the file as leading comments and is said again
+wherever the file is used, once per process, so a warm make says what a cold one said."""
 
 from __future__ import annotations
 
 import dataclasses
 import json
-from collections.abc import Callable, Iterable
+import warnings
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from typing import Any
+from xml.sax.saxutils import escape, unescape
 
 import mujoco
 
 from assembler.cache.content import PARTS, content_folder, recorded_text_file, text_file
+from assembler.cache.dependencies import asset_files
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.key import FORMAT, code_fingerprint, resolution_environment
+from assembler.errors import AssemblerWarning
+from assembler.models import PartModel
+from assembler.robosuite.lossless import lossless_xml
+
+NOTE = "<!-- assembler says: "
+"""How a part file carries a warning of its emission (one JSON object per leading comment line)."""
+
+_DASH = {"-": "&#45;"}
+"""A comment cannot hold ``--``: notes are written with every dash as a character reference."""
+
+_SAID: set[tuple[str, str, int]] = set()
+"""The notes said in this process, each once (not Python's registry for ``warn_explicit``: the
+emission's own ``catch_warnings`` clears that registry, and a cold make would say a note again at
+each part file it makes)."""
 
 
 def written_file(text: str) -> str:
@@ -21,17 +45,83 @@ def written_file(text: str) -> str:
     return str(text_file(content_folder(PARTS), text, ".xml"))
 
 
-def kept_file(inputs: object, read: Iterable[str], emit: Callable[[], str]) -> str:
+def kept_file(
+    inputs: object,
+    read: Iterable[str],
+    emit: Callable[[], str],
+    read_earlier: Callable[[], Mapping[str, tuple[int, int]]] | None = None,
+) -> str:
     """The part file of ``inputs`` (a part's or an assembly's build inputs, plain frozen data), kept
-    across processes: found by a key of the inputs, the assembler's code, MuJoCo's version and the
-    resolution environment, and served without ``emit()`` while the files in ``read`` (its MJCF and
-    includes) are unchanged and the file is whole."""
+    across processes: found by a key of the inputs (and their kind), the assembler's code, MuJoCo's
+    version and the resolution environment, and served without ``emit()`` while the files in
+    ``read`` (its MJCF, includes and assets) are unchanged and the file is whole. ``read`` and
+    ``read_earlier`` are used only when the text is made (see
+    :func:`~assembler.cache.content.recorded_text_file`)."""
     material = {
         "format": FORMAT,
         "assembler": code_fingerprint(),
         "mujoco": mujoco.__version__,
         "environment": resolution_environment(),
+        "kind": type(inputs).__qualname__,
         "inputs": dataclasses.asdict(inputs) if dataclasses.is_dataclass(inputs) else repr(inputs),  # type: ignore[arg-type]
     }
     key = buffer_digest(json.dumps(material, sort_keys=True, default=repr).encode())
-    return str(recorded_text_file(content_folder(PARTS), key, read, emit, ".xml"))
+    return str(recorded_text_file(content_folder(PARTS), key, read, emit, ".xml", read_earlier))
+
+
+def robosuite_file(
+    inputs: object, kept: bool, parts: list[PartModel], build: Callable[[], mujoco.MjSpec]
+) -> str:
+    """The lossless file of ``build()`` (the spec of ``parts``: one part, or an assembly), made only
+    when no kept file of ``inputs`` is current (``kept`` False: a hand-written class, made every
+    time); its notes said."""
+
+    def emit() -> str:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            text = lossless_xml(build())
+        notes = []
+        for warning in caught:
+            if issubclass(warning.category, AssemblerWarning):
+                notes.append(
+                    {"message": str(warning.message), "file": warning.filename, "line": warning.lineno}
+                )
+            else:  # not ours to carry: said here only
+                warnings.warn_explicit(warning.message, warning.category, warning.filename, warning.lineno)
+        return "".join(f"{NOTE}{escape(json.dumps(note), _DASH)} -->\n" for note in notes) + text
+
+    if kept:
+        path = kept_file(inputs, _files_read(parts), emit, lambda: _read_earlier(parts))
+    else:
+        path = written_file(emit())
+    for note in _notes_of(path):
+        said = (note["message"], note["file"], note["line"])
+        if said not in _SAID:
+            _SAID.add(said)
+            warnings.warn_explicit(*said[:1], AssemblerWarning, *said[1:])
+    return path
+
+
+def _files_read(parts: list[PartModel]) -> Iterator[str]:
+    """Every file the text of ``parts`` depends on: each part's MJCF and includes, and the asset files
+    its text names (which must still be there). Lazy: a part's MJCF is read only when iterated."""
+    for part in parts:
+        yield from (path for path, _, _ in part.source.files)
+        yield from asset_files(part.prepared_mjspec)
+
+
+def _read_earlier(parts: list[PartModel]) -> dict[str, tuple[int, int]]:
+    """Each part's MJCF and includes with their (size, mtime_ns) when the part read them."""
+    return {path: (size, mtime) for part in parts for path, size, mtime in part.source.files}
+
+
+def _notes_of(path: str) -> list[dict[str, Any]]:
+    """The notes at the head of a part file."""
+    notes = []
+    with open(path, encoding="utf-8") as file:
+        for line in file:
+            if not line.startswith(NOTE):
+                break
+            note = line.removeprefix(NOTE).removesuffix(" -->\n")
+            notes.append(json.loads(unescape(note, {v: k for k, v in _DASH.items()})))
+    return notes

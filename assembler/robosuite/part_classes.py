@@ -20,7 +20,7 @@ from robosuite.models.grippers import GripperModel as RobosuiteGripper
 from assembler.errors import SpecError
 from assembler.models import GripperModel, PartModel, RobotBaseModel
 from assembler.models.part import FloatArray
-from assembler.robosuite.parts import part_file, robosuite_variant
+from assembler.robosuite.parts import part_file, robosuite_part
 from assembler.spec.fieldpath import FieldPath
 
 BASE_CLASSES: dict[str, type] = {
@@ -47,7 +47,7 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
 
     def __init__(self, idn: int | str = 0) -> None:
         assert self.assembler_class is not None, "made per spec by robosuite_class_of"
-        self.part: GripperModel = robosuite_variant(self.assembler_class)(idn=idn)
+        self.part: GripperModel = robosuite_part(self.assembler_class, idn)
         """Our gripper: its spec, actions and state."""
         if self.part.action_map is None and self.part.actuators:
             actuators = ", ".join(name[len(self.part.naming_prefix) :] for name in self.part.actuators)
@@ -106,7 +106,7 @@ class SpecBase:
 
     def __init__(self, idn: int | str = 0) -> None:
         assert self.assembler_class is not None, "made per spec by robosuite_class_of"
-        self.part: RobotBaseModel = robosuite_variant(self.assembler_class)(idn=idn)
+        self.part: RobotBaseModel = robosuite_part(self.assembler_class, idn)
         """Our base."""
         super().__init__(part_file(self.part), idn=idn)  # type: ignore[call-arg]
 

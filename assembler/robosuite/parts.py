@@ -2,17 +2,17 @@
 
 robosuite lists each part's elements by name from the file it reads, and the environment looks every
 listed name up in the compiled world. So the file robosuite reads for a gripper or base and the
-assembly our robot builds must name every element alike: each part class has a robosuite variant (an
-unregistered subclass) whose part spec gives unnamed geoms robosuite's names and, for a robot whose
-spec says ``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
-text is the lossless emission, made once per build inputs in a process: every hard reset of an
-environment rebuilds every model, and the text of an unchanged part does not change.
+assembly our robot builds must name every element alike: a part made for robosuite
+(:func:`robosuite_part`, an instance of our spec class, no class of its own) has an ``adaptation``
+that gives unnamed geoms robosuite's names and, for a robot whose spec says
+``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
+text is the lossless emission, kept in the cache across processes (:mod:`.files`).
 """
 
 from __future__ import annotations
 
 import warnings
-from typing import Any, TypeVar
+from typing import TypeVar
 
 import mujoco
 
@@ -22,52 +22,45 @@ from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotMod
 from assembler.models.collision_colour import colour_collision_geoms
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos
 from assembler.robosuite.arm_centers import add_arm_centers
-from assembler.robosuite.conventions import DRIVEN_GROUPS, driven_actuators, robot_type_name
-from assembler.robosuite.files import written_file
+from assembler.robosuite.conventions import (
+    ACTUATION,
+    DRIVEN_GROUPS,
+    INERTIA_GROUPS,
+    driven_actuators,
+    robot_type_name,
+)
+from assembler.robosuite.files import robosuite_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
-from assembler.robosuite.lossless import lossless_xml
 from assembler.spec.fieldpath import FieldPath
 
 P = TypeVar("P", bound=PartModel)
 
-ACTUATION = FieldPath(("robosuite", "actuation"))
 JOINT_GROUPS = FieldPath(("joint_groups",))
 
-ROBOSUITE_INERTIA_GROUPS = (0, 0)
-"""The geom groups robosuite's world (``models/assets/base.xml``) counts in inferred inertias."""
 
-_variants: dict[type[Any], type[Any]] = {}
-_texts: dict[Any, str] = {}
+def robosuite_part(cls: type[P], idn: int | str = 0) -> P:
+    """A part of ``cls`` (our spec class) as robosuite's environments see it: an instance whose part
+    spec gets :func:`as_robosuite_sees` (its ``adaptation``), which its cache keys name."""
+    part = cls(idn=idn)
+    part.adaptation = as_robosuite_sees
+    return part
 
 
-def robosuite_variant(cls: type[P]) -> type[P]:
-    """``cls`` as robosuite sees it (made once per class, never registered)."""
-    variant = _variants.get(cls)
-    if variant is None:
-
-        def part_mjspec(self: PartModel) -> mujoco.MjSpec:
-            mjspec = name_geoms_as_robosuite(cls.part_mjspec(self))
-            if self.spec.collision_colour != "robosuite":
-                # robosuite's XML layer colours every collision geom itself when it reads a part: given
-                # that colour here, what robosuite reads is what we give (docs/robosuite.md)
-                colour_collision_geoms(mjspec, self.collision_rgba)
-            if isinstance(self, ManipulatorModel):
-                drive_as_declared(self, mjspec)
-                add_arm_centers(self, mjspec)
-            if isinstance(self, GripperModel):
-                add_grip_frames(self, mjspec)
-            return mjspec
-
-        namespace = {
-            "in_registry": False,
-            "part_mjspec": part_mjspec,
-            "__module__": __name__,
-            "__doc__": f"{cls.__name__} as robosuite's environments see it.",
-        }
-        variant = type(cls.__name__, (cls,), namespace)
-        _variants[cls] = variant
-    return variant
+def as_robosuite_sees(part: PartModel, mjspec: mujoco.MjSpec) -> mujoco.MjSpec:
+    """``mjspec`` (``part``'s own spec) with robosuite's geom names and collision colours, a robot's
+    drives as its spec declares them and its arms' centres, a gripper's grip frames."""
+    mjspec = name_geoms_as_robosuite(mjspec)
+    if part.spec.collision_colour != "robosuite":
+        # robosuite's XML layer colours every collision geom itself when it reads a part: given
+        # that colour here, what robosuite reads is what we give (docs/robosuite.md)
+        colour_collision_geoms(mjspec, part.collision_rgba)
+    if isinstance(part, ManipulatorModel):
+        drive_as_declared(part, mjspec)
+        add_arm_centers(part, mjspec)
+    if isinstance(part, GripperModel):
+        add_grip_frames(part, mjspec)
+    return mjspec
 
 
 def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
@@ -117,32 +110,22 @@ def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]
     return [j for j in robot.joint_names if robot.group_of(j) in driven and j not in targets]
 
 
-def _memo(key: Any, cacheable: bool, emit: Any) -> str:
-    """The file of ``emit()``'s text, the text made once per ``key`` in this process."""
-    if not cacheable:
-        return written_file(emit())
-    text = _texts.get(key)
-    if text is None:
-        text = _texts[key] = emit()
-    return written_file(text)
-
-
 def part_file(part: PartModel) -> str:
     """The file robosuite reads for ``part`` alone (unprefixed: robosuite prefixes it)."""
     inputs = part.part_inputs()
-    return _memo(("part", inputs), inputs.spec_made, lambda: lossless_xml(part.part_mjspec()))
+    return robosuite_file(inputs, inputs.spec_made, [part], part.part_mjspec)
 
 
 def assembly_file(robot: RobotModel) -> str:
     """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly)."""
     inputs = robot.build_inputs()
-    return _memo(("assembly", inputs), inputs.cacheable, lambda: lossless_xml(_world_checked(robot)))
+    return robosuite_file(inputs, inputs.cacheable, [robot, *robot.models], lambda: _world_checked(robot))
 
 
 def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
-    """The robot's assembly, said once where robosuite's world will weigh some body differently."""
+    """The robot's assembly, said where robosuite's world will weigh some body differently."""
     mjspec = robot.build_mjspec()
-    bodies = weighed_by_other_groups(mjspec, ROBOSUITE_INERTIA_GROUPS)
+    bodies = weighed_by_other_groups(mjspec, INERTIA_GROUPS)
     if bodies:
         shown = ", ".join(bodies[:4]) + (f" and {len(bodies) - 4} more" if len(bodies) > 4 else "")
         warnings.warn(

@@ -7,6 +7,17 @@ surgery: ``add_base`` and ``add_gripper`` hand the parts to the assembler, and `
 assembly of robot, base and grippers. The name lists robosuite reads (joints, actuators, geoms,
 sites) come from robosuite's own parse of each part's lossless file, so they are the robot's own,
 and every name in them exists in that assembly.
+
+One class per robot is offered to robosuite: the :class:`SpecRobot` subclass :func:`robot_class`
+makes, in ``REGISTERED_ROBOTS``. robosuite's other table, ``ROBOT_CLASS_MAPPING``, gets robosuite's
+own Robot type for the robot (``FixedBaseRobot``, ``LeggedRobot``, ...; no class of ours). Our spec
+class (``assembler.models``' registry) is not given to robosuite, and it cannot be this class:
+``REGISTERED_ROBOTS[name](idn=...)`` must make one of robosuite's ``ManipulatorModel``s (an XML tree
+with ``_elements``, which robosuite's ``create_composite_robot`` subclasses by name), and the two
+hierarchies give 45 names different meanings (``get_model``, ``models``, ``joints``, ``init_qpos``,
+``add_gripper``, ``set_joint_attribute``, ...). So a :class:`SpecRobot` holds our robot as an
+instance (``assembly``, made for robosuite by :func:`~assembler.robosuite.parts.robosuite_part`:
+no class of its own). Grippers and bases likewise (:mod:`assembler.robosuite.part_classes`).
 """
 
 from __future__ import annotations
@@ -26,7 +37,7 @@ from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorM
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
 from assembler.robosuite.conventions import base_in_robosuite
-from assembler.robosuite.parts import assembly_file, part_file, robosuite_variant
+from assembler.robosuite.parts import assembly_file, part_file, robosuite_part
 from assembler.robosuite.placement import offsets
 from assembler.robosuite.same_names import check_same_names
 from assembler.spec.fieldpath import FieldPath
@@ -65,7 +76,7 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     def __init__(self, idn: int | str = 0) -> None:
         if self.assembler_class is None:
             raise AssemblerError("SpecRobot is made per spec: use assembler.robosuite.robot_class(name)")
-        self.assembly: ManipulatorModel = robosuite_variant(self.assembler_class)(idn=idn)
+        self.assembly: ManipulatorModel = robosuite_part(self.assembler_class, idn)
         """Our robot, base and grippers, built the assembler's way."""
         super().__init__(part_file(self.assembly), idn=idn)
 
@@ -210,31 +221,30 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
 
 
-def our_instance(registry: Registry[P], robosuite_part: Any, reuse: bool = True) -> P:
-    """Our part for ``robosuite_part`` (a robosuite gripper or base object): when it is one of ours, the
-    very part whose model file robosuite read (its XML is read once; ``reuse``), else a new instance of
-    :func:`our_part`."""
-    own = getattr(robosuite_part, "part", None)
-    if reuse and getattr(type(robosuite_part), "assembler_class", None) is not None and own is not None:
+def our_instance(registry: Registry[P], given: Any, reuse: bool = True) -> P:
+    """Our part for ``given`` (a robosuite gripper or base object): when it is one of
+    ours, the very part whose model file robosuite read (its XML is read once; ``reuse``), else a new
+    part made for robosuite of :func:`our_part`."""
+    own = getattr(given, "part", None)
+    if reuse and getattr(type(given), "assembler_class", None) is not None and own is not None:
         return own  # type: ignore[no-any-return]
-    return our_part(registry, robosuite_part)(idn=robosuite_part.idn)
+    return robosuite_part(our_part(registry, given), given.idn)
 
 
-def our_part(registry: Registry[P], robosuite_part: Any) -> type[P]:
-    """The robosuite variant of our class for ``robosuite_part`` (a robosuite gripper or base object):
-    its own spec class when it is one of ours, else our spec of the same name, whose names must be
-    robosuite's."""
-    spec_class = getattr(type(robosuite_part), "assembler_class", None)
+def our_part(registry: Registry[P], given: Any) -> type[P]:
+    """Our spec class for ``given`` (a robosuite gripper or base object): its own when
+    it is one of ours, else our spec of the same name, whose names must be robosuite's."""
+    spec_class = getattr(type(given), "assembler_class", None)
     if spec_class is None:
-        name = type(robosuite_part).__name__
+        name = type(given).__name__
         spec_class = registry.get(name)
         if spec_class is None:
             raise AssemblerError(
                 f"robosuite's {registry.family} {name} has no spec: a spec robot is built from specs only; "
                 f"write a {registry.family} spec named {name}, or pick one of {', '.join(sorted(registry))}"
             )
-        check_same_names(robosuite_part, spec_class)
-    return robosuite_variant(spec_class)
+        check_same_names(given, spec_class)
+    return spec_class
 
 
 def robot_class(assembler_class: type[ManipulatorModel]) -> type[SpecRobot]:

@@ -19,7 +19,7 @@ import assembler.robosuite  # noqa: E402, F401
 from assembler.errors import MissingPackageError  # noqa: E402
 from assembler.models import REGISTRIES, PartModel  # noqa: E402
 from assembler.robosuite.part_classes import robosuite_class_of  # noqa: E402
-from assembler.robosuite.parts import robosuite_variant  # noqa: E402
+from assembler.robosuite.parts import robosuite_part  # noqa: E402
 from assembler.robosuite.registries import family_of, offered  # noqa: E402
 from assembler.robosuite.robot_class import robot_class  # noqa: E402
 from tests.robosuite.exact import differences  # noqa: E402
@@ -35,7 +35,7 @@ PARTS = sorted(
 
 def _ours(cls: type[PartModel]) -> mujoco.MjModel:
     """Our compile of the part robosuite is given (robosuite's geom names, declared arm actuation)."""
-    return robosuite_variant(cls)(idn=0).part_mjspec().compile()
+    return robosuite_part(cls).part_mjspec().compile()
 
 
 def _theirs(cls: type[PartModel]) -> mujoco.MjModel:

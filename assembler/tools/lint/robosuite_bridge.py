@@ -16,13 +16,12 @@ from collections.abc import Iterator
 
 from assembler.errors import SpecError
 from assembler.models import ManipulatorModel
+from assembler.robosuite.conventions import CONTROLLER
 from assembler.robosuite.parts import undriven_joints
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 from assembler.tools.lint.finding import Finding
 from assembler.tools.lint.target import LintTarget
-
-CONTROLLER = FieldPath(("robosuite", "controller"))
 
 
 def _offered(target: LintTarget) -> Iterator[ManipulatorModel]:

@@ -19,6 +19,7 @@ import mujoco
 
 from assembler.models import ManipulatorModel
 from assembler.robosuite.conventions import (
+    ACTUATION,
     arm_center_site,
     driven_actuators,
     has_force_range,
@@ -28,7 +29,6 @@ from assembler.spec.fieldpath import FieldPath
 from assembler.tools.lint.finding import Finding
 from assembler.tools.lint.target import ACTUATOR_TAGS, LintTarget
 
-ACTUATION = FieldPath(("robosuite", "actuation"))
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR
 
