@@ -13,6 +13,7 @@ start-up hook (:mod:`.hook`) live here without making robosuite a dependency of 
 from __future__ import annotations
 
 import importlib
+import sys
 from typing import Any
 
 from assembler.robosuite.hook import when_robosuite_loads
@@ -31,4 +32,16 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module 'assembler.robosuite' has no attribute '{name}'")
 
 
-when_robosuite_loads(_bridge)
+def _bridge_unless_importing_ours() -> None:
+    """The bridge, when robosuite loads; unless one of this package's own modules loaded robosuite
+    while it is itself being imported (``import assembler.robosuite.autoload`` first): the bridge
+    needs that module whole, so it comes on the first use of a function above instead."""
+    if any(
+        name.startswith(f"{__name__}.") and getattr(getattr(module, "__spec__", None), "_initializing", False)
+        for name, module in list(sys.modules.items())
+    ):
+        return
+    _bridge()
+
+
+when_robosuite_loads(_bridge_unless_importing_ours)

@@ -8,6 +8,7 @@ is mocked: robosuite is imported, its tables are read after our import, environm
 from __future__ import annotations
 
 import json
+import pkgutil
 import subprocess
 import sys
 import sysconfig
@@ -16,6 +17,7 @@ from typing import Any
 
 import pytest
 
+import assembler.robosuite
 from assembler.urdf.packages import package_folders
 
 pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
@@ -439,3 +441,27 @@ def test_a_spec_robots_declared_or_default_controller_is_what_robosuites_loader_
     assert rover["body_parts"]["right"] == seen["panda_right"]
     assert rover["body_parts"]["base"] == seen["rover_base"]
     assert seen["in_lift"] == "JointPositionController"
+
+
+BRIDGE_MODULES = sorted(
+    module.name
+    for module in pkgutil.iter_modules([str(Path(assembler.robosuite.__file__).parent)])
+    if module.name not in ("__main__", "pytest_plugin")
+)
+"""Every module of the bridge package (``__main__`` runs a command; the plugin is pytest's)."""
+
+
+@pytest.mark.parametrize("module", BRIDGE_MODULES)
+def test_any_module_of_the_bridge_imported_first_leaves_our_specs_in_robosuite(
+    module: str, tmp_path: Path
+) -> None:
+    seen = _result(
+        f"""
+        import json
+        import assembler.robosuite.{module}
+        import assembler.robosuite, robosuite
+        print("RESULT " + json.dumps("Sparrow7" in assembler.robosuite.registered()["robot"]))
+        """,
+        tmp_path,
+    )
+    assert seen is True
