@@ -3,26 +3,53 @@
 An override that changes nothing is almost always a mistake a reviewer would want flagged:
 ``joint_defaults.damping`` on a robot whose ``joints:`` set damping on every joint, say. Each
 override is tested by building without it (from the cache when the plain robot is there) and
-comparing the two compiled models byte for byte.
+comparing the two compiled models field by field. Not byte for byte: one of the two may be a variant
+patched onto the cached robot (:mod:`assembler.build.patched`) and the other compiled, and those agree
+to 1e-10, not to the last bit.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
 import mujoco
 import numpy as np
+from numpy.typing import NDArray
 
-from assembler.cache.file_state import buffer_digest
 from assembler.models import RobotModel
 from assembler.spec.documents import Override
 
+RELATIVE = 1e-9
+"""How close two numbers of two models must be to be the same (a patch agrees with a compile to 1e-10)."""
 
-def model_digest(model: mujoco.MjModel) -> str:
-    """A digest of everything in a compiled model (MuJoCo's own binary form of it)."""
-    buffer = np.empty(mujoco.mj_sizeModel(model), dtype=np.uint8)
-    mujoco.mj_saveModel(model, None, buffer)
-    return buffer_digest(buffer)
+
+def _arrays(model: mujoco.MjModel) -> dict[str, NDArray[Any]]:
+    return {
+        name: value
+        for name in dir(model)
+        if not name.startswith("_") and isinstance(value := getattr(model, name), np.ndarray)
+    }
+
+
+def same_model(first: mujoco.MjModel, second: mujoco.MjModel) -> bool:
+    """True when every array of the two compiled models is the same: integers (counts, addresses,
+    names) equal, numbers equal to :data:`RELATIVE` (or 1e-12 absolute)."""
+    if mujoco.mj_sizeModel(first) != mujoco.mj_sizeModel(second):
+        return False
+    mine, theirs = _arrays(first), _arrays(second)
+    if mine.keys() != theirs.keys():
+        return False
+    for name, value in mine.items():
+        other = theirs[name]
+        if value.shape != other.shape:
+            return False
+        if np.issubdtype(value.dtype, np.floating):
+            if not np.allclose(value, other, rtol=RELATIVE, atol=1e-12, equal_nan=True):
+                return False
+        elif not np.array_equal(value, other):
+            return False
+    return True
 
 
 def superseded(overrides: Sequence[Override]) -> list[bool]:
@@ -50,10 +77,10 @@ def overrides_without_effect(
         return []
     replaced = superseded(overrides)
     counting = [index for index, gone in enumerate(replaced) if not gone]
-    full = model_digest(build(overrides).get_model(cache=cache))
+    full = build(overrides).get_model(cache=cache)
     idle = {index for index, gone in enumerate(replaced) if gone}
     for index in counting:
         others = [overrides[other] for other in counting if other != index]
-        if model_digest(build(others).get_model(cache=cache, store=False)) == full:
+        if same_model(build(others).get_model(cache=cache, store=False), full):
             idle.add(index)
     return [overrides[index] for index in sorted(idle)]
