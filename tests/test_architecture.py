@@ -125,6 +125,10 @@ DEFERRED = {
     ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
     ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",
     (
+        "assembler.registry.deferred",
+        "assembler.files.bundles",
+    ): "a cached save copies assets (ElementTree) only for a model naming a file in the cache",
+    (
         "assembler.robosuite",
         "assembler.robosuite.bridge",
     ): "the bridge imports robosuite, when robosuite loads",

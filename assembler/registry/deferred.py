@@ -23,6 +23,7 @@ imported them) makes every robot at once: that is cheap then, and the object is 
 from __future__ import annotations
 
 import importlib
+import os
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -35,7 +36,8 @@ from assembler.build.load_model import assembly_request
 from assembler.build.lookup import entry_key
 from assembler.build.repeat import KeyedRequest, record_of, recorded_model, recorded_xml
 from assembler.cache.requests import RequestRecord
-from assembler.files.bundles import save_model
+from assembler.cache.settings import volatile_folders
+from assembler.files.writing import write_atomically
 from assembler.mjcf.keyframe import Keyframe
 from assembler.registry.arguments import DEFAULT, ArgumentKind, argument_kind
 
@@ -153,9 +155,13 @@ class DeferredRobot:
         return _materialise(self).get_xml(cache, store, meshes)  # type: ignore[no-any-return]
 
     def save(self, path: str | Path, cache: bool = True) -> Path:
-        """As :meth:`RobotModel.save`: the MJCF written to ``path`` with the assets it names in
-        the cache folder copied beside it."""
-        return save_model(self.get_xml(cache=cache), Path(path))
+        """As :meth:`RobotModel.save`: the MJCF written to ``path``, with the assets it names in the
+        cache folder copied beside it (the copying module is loaded only for a model that names one)."""
+        xml, target = self.get_xml(cache=cache), Path(path)
+        if not any(os.fspath(folder) in xml for folder in volatile_folders()):
+            write_atomically(target, xml)
+            return target
+        return importlib.import_module("assembler.files.bundles").save_model(xml, target)  # type: ignore[no-any-return]
 
     # Anything else is the real robot's: made on first use, in place.
 

@@ -32,6 +32,7 @@ from assembler.cache.folder import evict
 from assembler.cli import main
 from assembler.robosuite.files import kept_file, written_file
 from assembler.urdf.meshes import converted_dir, importable
+from assembler.urdf.packages import package_folders
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
 
@@ -262,6 +263,37 @@ def test_a_model_saved_from_python_still_loads_after_the_cache_is_removed(
     shutil.rmtree(tmp_path / "cache")
     assert mujoco.MjModel.from_xml_path(str(saved)).nmesh > 0
     assert (tmp_path / "saved.xml-assets").is_dir()
+
+
+SAVED_IN_A_NEW_PROCESS = (
+    "import sys, assembler, assembler.build.service; "
+    "robot = assembler.assemble('UR5'); robot.save(sys.argv[1]); "
+    "assembler.build.service.wait_for_writes(); print(type(robot).__name__)"
+)
+
+
+@NEEDS_CONVERTER
+@pytest.mark.skipif(not package_folders("example-robot-data"), reason="needs the urdf extra's robots")
+def test_a_model_saved_by_a_robot_asked_for_before_still_loads_after_the_cache_is_removed(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    use_private_cache(tmp_path / "cache", monkeypatch)
+    answered_by = []
+    for attempt in range(4):  # converted meshes too recent to record, then the record, then its answer
+        if answered_by[-1:] == ["DeferredRobot"]:
+            break
+        time.sleep(2.5 if attempt else 0)  # files younger than 2 s are not recorded (file_state.settled)
+        done = subprocess.run(
+            [sys.executable, "-c", SAVED_IN_A_NEW_PROCESS, str(tmp_path / f"ur5_{attempt}.xml")],
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        answered_by.append(done.stdout.split()[-1])
+    assert answered_by[-1] == "DeferredRobot"  # a robot asked for before, answered from its record
+    saved = tmp_path / f"ur5_{len(answered_by) - 1}.xml"
+    shutil.rmtree(tmp_path / "cache")
+    assert mujoco.MjModel.from_xml_path(str(saved)).nmesh > 0
 
 
 @NEEDS_CONVERTER
