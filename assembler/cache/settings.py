@@ -21,6 +21,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from assembler.errors import AssemblerError
+from assembler.files.variables import restored_after
 
 DIR_VARIABLE = "ASSEMBLER_CACHE_DIR"
 MAX_BYTES_VARIABLE = "ASSEMBLER_CACHE_MAX_BYTES"
@@ -75,15 +76,9 @@ def switched_off(off: bool) -> Iterator[None]:
     if not off:
         yield
         return
-    before = os.environ.get(DISABLE_VARIABLE)
-    os.environ[DISABLE_VARIABLE] = "1"
-    try:
+    with restored_after(DISABLE_VARIABLE):
+        os.environ[DISABLE_VARIABLE] = "1"
         yield
-    finally:
-        if before is None:
-            os.environ.pop(DISABLE_VARIABLE, None)
-        else:
-            os.environ[DISABLE_VARIABLE] = before
 
 
 def parse_size(text: str) -> int:

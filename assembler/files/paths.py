@@ -24,6 +24,7 @@ from assembler.errors import AssemblerError, MissingPackageError, MjcfError, Spe
 from assembler.files.extras import install_hint
 from assembler.files.inputs import note_resolution
 from assembler.files.repositories import MARKER, find_repository, git_top
+from assembler.files.variables import restored_after
 
 PACKAGE_SCHEME = "package://"
 
@@ -100,15 +101,9 @@ def allow_paths(*folders: str | Path) -> None:
 @contextlib.contextmanager
 def allowing(folders: Iterable[str | Path]) -> Iterator[None]:
     """:func:`allow_paths` for the duration of a block (one CLI run), then as before."""
-    before = os.environ.get(ALLOW_VARIABLE)
-    allow_paths(*folders)
-    try:
+    with restored_after(ALLOW_VARIABLE):
+        allow_paths(*folders)
         yield
-    finally:
-        if before is None:
-            os.environ.pop(ALLOW_VARIABLE, None)
-        else:
-            os.environ[ALLOW_VARIABLE] = before
 
 
 def trusted_folders() -> list[Path]:

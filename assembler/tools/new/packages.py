@@ -28,6 +28,7 @@ from typing import Literal
 from assembler.files.limits import MAX_MJCF_BYTES
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER, find_repository
+from assembler.files.variables import restored_after
 from assembler.urdf.packages import package_folders, split_package_uri
 
 PACKAGE_URI = re.compile(r"""package://[^"'\s<>]+""")
@@ -140,12 +141,7 @@ def found_packages(packages: Sequence[BesidePackage]) -> Iterator[None]:
     reading and its check of the written spec), through ``ROS_PACKAGE_PATH``; then as before."""
     before = os.environ.get(VARIABLE)
     folders = [str(package.folder) for package in packages]
-    if folders:
-        os.environ[VARIABLE] = os.pathsep.join([*folders, *([before] if before else [])])
-    try:
+    with restored_after(VARIABLE):
+        if folders:
+            os.environ[VARIABLE] = os.pathsep.join([*folders, *([before] if before else [])])
         yield
-    finally:
-        if before is None:
-            os.environ.pop(VARIABLE, None)
-        else:
-            os.environ[VARIABLE] = before
