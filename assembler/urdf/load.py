@@ -35,7 +35,7 @@ from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.urdf.document import FORCED_COMPILER, UrdfDocument, read_urdf
 from assembler.urdf.meshes import converted_dir
-from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
+from assembler.urdf.packages import find_package_file, not_found_message, resolution_state, split_package_uri
 from assembler.urdf.postprocess import (
     add_mimics,
     balance_inertias,
@@ -156,7 +156,13 @@ def _import(text: str, shown: str) -> mujoco.MjSpec:
 
 @functools.lru_cache(maxsize=32)
 def _load(
-    path: Path, mtime_ns: int, size: int, homes: frozenset[Path], converted: Path, balance: bool
+    path: Path,
+    mtime_ns: int,
+    size: int,
+    homes: frozenset[Path],
+    converted: Path,
+    balance: bool,
+    packages: tuple[object, ...],
 ) -> MjcfSource:
     shown = display_path(path)
     check_mjcf(path, homes)  # size and no DTD, before any parser expands anything
@@ -194,7 +200,10 @@ def load_urdf(reference: str, balance_inertia: bool = False) -> MjcfSource:
     path = locate_urdf_file(reference).resolve()
     stat = path.stat()
     homes = frozenset({path.parent, *homes_of(path), *allowed_folders()})
-    arguments = (path, stat.st_mtime_ns, stat.st_size, homes, converted_dir(), balance_inertia)
+    # ``packages``: where package:// leads is part of the read, or a switched ROS_PACKAGE_PATH would
+    # get the other copy's meshes (and the disk cache would keep that model under the new key)
+    packages = resolution_state(path)
+    arguments = (path, stat.st_mtime_ns, stat.st_size, homes, converted_dir(), balance_inertia, packages)
     source = _load(*arguments)
     if not source.is_current():  # a mesh changed or a converted mesh was removed: read it again
         _load.cache_clear()

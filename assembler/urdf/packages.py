@@ -28,6 +28,7 @@ import sysconfig
 from collections.abc import Iterator
 from pathlib import Path
 
+from assembler.cache.key import PACKAGE_VARIABLES
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
 from assembler.files.paths import confine, display_path, is_file
@@ -82,6 +83,15 @@ def package_folders(name: str, urdf: Path | None = None) -> list[Path]:
         if folder.is_dir() and folder.resolve() not in found:
             found.append(folder.resolve())
     return found
+
+
+def resolution_state(urdf: Path) -> tuple[object, ...]:
+    """Everything :func:`package_folders` reads besides the files: the package variables, the Python
+    environment and the packages the spec repository holding ``urdf`` declares. A URDF read with
+    other values is read again (a notebook that points ``ROS_PACKAGE_PATH`` at another copy)."""
+    repository = find_repository(urdf.parent)
+    declared = repository.packages if repository is not None else ()
+    return (*(os.environ.get(name, "") for name in PACKAGE_VARIABLES), sys.prefix, declared)
 
 
 def find_package_file(uri: str, urdf: Path | None = None, what: str = "") -> tuple[Path, Path] | None:

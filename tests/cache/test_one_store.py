@@ -34,7 +34,7 @@ from assembler.robosuite.files import kept_file, written_file
 from assembler.urdf.meshes import converted_dir, importable
 from assembler.urdf.packages import package_folders
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
-from tests.urdf.fixtures import ARM_URDF, write_package
+from tests.urdf.fixtures import ARM_URDF, write_package, write_stl
 
 ASSEMBLER = [str(Path(sys.executable).parent / "assembler")]
 
@@ -366,3 +366,40 @@ def test_a_kept_part_file_is_served_without_emitting_while_its_files_are_unchang
     edit_keeping_size_and_times(folder / "arm.xml", '"arm"', '"ARM"')  # its MJCF edited, touch -r
     assert "ARM" in Path(kept_file(inputs, [str(folder / "arm.xml")], emit)).read_text()
     assert len(emitted) == 3
+
+
+MESH_URDF = """<robot name="pkg_arm">
+  <link name="base"><collision><geometry><mesh filename="package://my_arm/meshes/cube.stl"/></geometry>
+  </collision></link>
+  <link name="tool"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/>
+  </inertial></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="tool"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+
+
+def test_switching_ros_package_path_within_a_process_reads_the_other_copy(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A notebook that points ROS_PACKAGE_PATH at another copy of a package gets that copy's meshes,
+    and with it unset the package is not found: the URDF read before is not reused for either."""
+    use_private_cache(tmp_path / "cache", monkeypatch)
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    write_package(tmp_path / "one", urdf=MESH_URDF, declare=False)
+    write_stl(
+        write_package(tmp_path / "two", urdf=MESH_URDF, declare=False).parents[1] / "meshes/cube.stl", 0.3
+    )
+    (tmp_path / "arm.yaml").write_text(
+        "name: PkgArm\nurdf: one/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
+    )
+    assembler.register_specs(tmp_path / "arm.yaml")
+    extents = []
+    for copy in ("one", "two", "one"):
+        monkeypatch.setenv("ROS_PACKAGE_PATH", str(tmp_path / copy))
+        model = assembler.create_robot("PkgArm").get_model()
+        extents.append(round(float(np.ptp(model.mesh_vert[:, 0])), 3))
+    assert extents == [0.1, 0.3, 0.1]
+    monkeypatch.delenv("ROS_PACKAGE_PATH")
+    with pytest.raises(assembler.AssemblerError, match="package 'my_arm' not found"):
+        assembler.create_robot("PkgArm").get_model()
