@@ -339,3 +339,27 @@ def test_a_package_beside_a_urdf_no_declaration_can_name_is_the_ros_package_path
     with allowing([model.parent]):
         (cls,) = register_specs(spec)
         assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
+
+
+def test_a_package_beside_a_urdf_of_an_installed_python_package_is_exported_even_inside_a_checkout(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A venv inside the spec repository (CI's, many a lab's ``.venv``): the spec names the URDF as
+    package://, so the declaration would name this machine's install; new says to export the folder."""
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    write("lab/robot-assembler.toml", "")
+    write("lab/.venv/site/vendor_robots/__init__.py", "")
+    folder = write("lab/.venv/site/vendor_robots/arm_description/meshes/tet.obj", TETRAHEDRON_OBJ).parents[1]
+    model = write("lab/.venv/site/vendor_robots/pincer_arm.urdf", MESH_URDF)
+    monkeypatch.syspath_prepend(str(folder.parents[1]))
+    spec = write("lab/specs/keep.txt", "").with_name("pincer_arm.yaml")
+    assert _new(model, spec) == 0
+    assert capsys.readouterr().out.splitlines()[1:] == [
+        f"to do: package://arm_description is the folder {folder} beside the URDF: set ROS_PACKAGE_PATH to "
+        "hold it (a spec repository may name only folders inside it)",
+        f"  export ROS_PACKAGE_PATH={folder}",
+    ]
+    assert "urdf: package://vendor_robots/pincer_arm.urdf" in spec.read_text()
+    monkeypatch.setenv("ROS_PACKAGE_PATH", str(folder))  # as printed
+    (cls,) = register_specs(spec)
+    assert assembler.create_robot(cls.__name__).get_model().nmesh == 1

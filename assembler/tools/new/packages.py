@@ -10,8 +10,10 @@ says exactly what to add, in the first place that works:
 2. the folder the spec is written to, when the URDF lies below it and no repository holds the URDF:
    ``new`` writes ``robot-assembler.toml`` there with that entry (beside the spec, never elsewhere,
    never in the vendor's files);
-3. otherwise (the URDF is in an installed package, outside the spec's folder): the environment,
-   ``ROS_PACKAGE_PATH`` holding the folder, since a repository may only name folders inside it.
+3. otherwise (the URDF is in an installed Python package, or outside the spec's folder): the
+   environment, ``ROS_PACKAGE_PATH`` holding the folder, since a repository may only name folders
+   inside it, and a spec names an installed package's URDF as ``package://`` whatever machine it is
+   on (a declaration would name this machine's install, e.g. a venv inside the checkout).
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from assembler.files.limits import MAX_MJCF_BYTES
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER, find_repository
 from assembler.files.variables import restored_after
+from assembler.tools.new.reading import python_package_reference
 from assembler.urdf.packages import package_folders, split_package_uri
 
 PACKAGE_URI = re.compile(r"""package://[^"'\s<>]+""")
@@ -89,15 +92,18 @@ def _reaches(urdf: Path, spec_dir: Path) -> bool:
 
 def _package(urdf: Path, name: str, folder: Path, spec_dir: Path) -> BesidePackage:
     shown = f"package://{name} is the folder {display_path(folder)} beside the URDF"
-    repository = find_repository(urdf.parent)
-    if repository is not None and folder.is_relative_to(repository.root):
-        entry = folder.relative_to(repository.root).as_posix()
-        todo = f'{shown}: add "{entry}" to packages in {repository.where}'
-        return BesidePackage(name, folder, todo, "repository", entry)
-    if repository is None and folder.is_relative_to(spec_dir.resolve()) and _reaches(urdf, spec_dir):
-        entry = folder.relative_to(spec_dir.resolve()).as_posix()
-        todo = f"{shown}: declared in {display_path(spec_dir / MARKER)}, which new wrote"
-        return BesidePackage(name, folder, todo, "beside the spec", entry)
+    # A URDF of an installed Python package is named package://..., the same on every machine: a
+    # declaration would name this machine's install (a venv inside the checkout: .venv/lib/python3.11/...)
+    if python_package_reference(urdf) is None:
+        repository = find_repository(urdf.parent)
+        if repository is not None and folder.is_relative_to(repository.root):
+            entry = folder.relative_to(repository.root).as_posix()
+            todo = f'{shown}: add "{entry}" to packages in {repository.where}'
+            return BesidePackage(name, folder, todo, "repository", entry)
+        if repository is None and folder.is_relative_to(spec_dir.resolve()) and _reaches(urdf, spec_dir):
+            entry = folder.relative_to(spec_dir.resolve()).as_posix()
+            todo = f"{shown}: declared in {display_path(spec_dir / MARKER)}, which new wrote"
+            return BesidePackage(name, folder, todo, "beside the spec", entry)
     todo = f"{shown}: set {VARIABLE} to hold it (a spec repository may name only folders inside it)"
     return BesidePackage(name, folder, todo, "environment")
 
