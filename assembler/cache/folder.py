@@ -12,8 +12,10 @@ every part it holds.
 Each part's file names are known here, and nothing else in the folder is ever counted, evicted or
 removed. A unit of eviction is what goes together (a model's manifest with its model and XML
 files; any other file alone); its last use is its modification time, which every hit sets. After
-every write, temporary files and claims older than :data:`GRACE_SECONDS` (their writer died) are
-removed, then the least recently used units until everything fits ``ASSEMBLER_CACHE_MAX_BYTES``.
+every write of a model or a decoded mesh (a request record is too small to matter: its own store
+bounds their number), temporary files and claims older than :data:`GRACE_SECONDS` (their writer
+died) are removed, then the least recently used units until everything fits
+``ASSEMBLER_CACHE_MAX_BYTES``.
 Files named by their content (converted meshes, robosuite's part files) keep their modification
 time (when they were made: a model made from a converted mesh records it) and mark a use in their
 access time instead (:mod:`assembler.cache.content`): their last use is the later of the two.
