@@ -9,11 +9,15 @@ what MuJoCo derives from it (:func:`~assembler.build.derived.apply_patch`): no M
 mesh is read or decoded, nothing is compiled. The result equals a full compile within 1e-10 in
 every model field (tests/build/test_patched_api.py).
 
+``get_xml()`` and ``save()`` of such a robot are answered the same way when the plain robot's entry
+holds its emitted XML too: that text with the patch's values written into the attributes that hold
+them (:mod:`assembler.build.patched_text`), which MuJoCo loads to the full compile's model.
+
 Anything a patch cannot do (a structural override, ``set_joint_attribute`` edits, the plain robot
 not in the cache) is compiled as before; the reason is logged at DEBUG level on the
 ``assembler.build.patched`` logger, never warned: a compile is the normal answer, not a problem.
 
-A patched model is not stored as a cache entry of its own, whatever ``store`` says: patching it
+A patched model (or XML) is not stored as a cache entry of its own, whatever ``store`` says: patching it
 again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU against ~0.1 s for
 the load, measured under load), while storing it costs more than the patch (serialising a Panda's
 44 MB model, mostly its meshes, took 0.17 s of CPU, plus the write) and each such entry would push
@@ -26,12 +30,16 @@ from __future__ import annotations
 import logging
 from dataclasses import replace
 
+import mujoco
+
 from assembler.build.derived import apply_patch
-from assembler.build.lookup import entry_key, load_entry
+from assembler.build.lookup import default_store, entry_key, load_entry
 from assembler.build.patch_inputs import Resolved, resolve_spec
-from assembler.build.patchable import NotPatchable, model_patch
+from assembler.build.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.build.patched_text import patched_text
 from assembler.build.service import CompiledModel
 from assembler.mjcf.keyframe import Keyframe
+from assembler.mjcf.xml_text import XmlText
 from assembler.models import RobotModel
 from assembler.registry.catalog import applied_overrides
 
@@ -64,9 +72,9 @@ def _tables(plain: RobotModel, robot: RobotModel) -> tuple[Resolved, Resolved]:
     return resolved, light if light is not None else Resolved.of(robot)
 
 
-def patched_variant(robot: RobotModel) -> CompiledModel | None:
-    """``robot``'s model patched from the cached model of its plain robot (see the module); None,
-    with the reason logged, when it must be compiled."""
+def _plain_patch(robot: RobotModel) -> tuple[str, mujoco.MjModel, ModelPatch] | None:
+    """The cache key and model of ``robot``'s plain robot, and the patch that makes ``robot`` of
+    it; None, with the reason logged, when it must be compiled."""
     reason = _refusal(robot)
     if reason is not None:
         LOG.debug("%s compiled: %s", robot.name, reason)
@@ -78,10 +86,39 @@ def patched_variant(robot: RobotModel) -> CompiledModel | None:
         LOG.debug("%s compiled: the robot without its overrides is not in the model cache", robot.name)
         return None
     try:
-        patch = model_patch(model, *_tables(plain, robot))
+        return base_key, model, model_patch(model, *_tables(plain, robot))
     except NotPatchable as error:
         LOG.debug("%s compiled: %s", robot.name, error)
         return None
+
+
+def patched_variant(robot: RobotModel) -> CompiledModel | None:
+    """``robot``'s model patched from the cached model of its plain robot (see the module); None,
+    with the reason logged, when it must be compiled."""
+    found = _plain_patch(robot)
+    if found is None:
+        return None
+    _, model, patch = found
     apply_patch(model, patch)  # load_entry's model is this caller's own (a copy when kept in memory)
     LOG.debug("%s patched from its plain robot's cached model: %s", robot.name, ", ".join(patch.fields))
     return CompiledModel(model, Keyframe.of(model))
+
+
+def patched_variant_xml(robot: RobotModel) -> tuple[CompiledModel, str] | None:
+    """``robot``'s model and MJCF, both from its plain robot's cache entry: the model patched, the
+    text the plain robot's emitted XML with the patch's values written in
+    (:mod:`assembler.build.patched_text`); None, with the reason logged, when it must be compiled
+    (the entry holds no XML, or the patch writes what no attribute holds alone: ``bodies:`` scales)."""
+    found = _plain_patch(robot)
+    if found is None:
+        return None
+    base_key, model, patch = found
+    xml = default_store().load_xml(base_key)
+    text = patched_text(model, XmlText(xml), patch) if xml is not None else None
+    if text is None:
+        why = "its plain robot's XML is not cached" if xml is None else "not writable as attribute edits"
+        LOG.debug("%s compiled for its XML: %s", robot.name, why)
+        return None
+    apply_patch(model, patch)
+    LOG.debug("%s written from its plain robot's cached XML: %s", robot.name, ", ".join(patch.fields))
+    return CompiledModel(model, Keyframe.of(model)), text

@@ -138,6 +138,7 @@ def compile_xml(
     cache: bool = True,
     store: bool = True,
     meshes: bool = True,
+    patched: Callable[[], tuple[CompiledModel, str] | None] | None = None,
 ) -> tuple[CompiledModel | None, str]:
     """The emitted MJCF of the cache entry ``key`` (see :func:`entry_key`), and the model when one
     was compiled.
@@ -148,7 +149,8 @@ def compile_xml(
     added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
     False reads meshes from their files rather than the mesh store: a process compiling the same
     meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from
-    files processed (hulls, normals), and not those given in memory.
+    files processed (hulls, normals), and not those given in memory. On a miss, ``patched()`` is
+    asked first, as :func:`compile_model` asks it; its answer is not stored either.
     """
     if key is None:
         counts.bypassed += 1
@@ -162,6 +164,10 @@ def compile_xml(
         counts.hits += 1
         return None, stored
     counts.misses += 1
+    answer = patched() if patched is not None else None
+    if answer is not None:
+        counts.patched += 1
+        return answer
     assembly = _built(build)
     recorder = _recorder(assembly)
     model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)

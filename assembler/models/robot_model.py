@@ -252,6 +252,13 @@ class RobotModel(PlacedPart):
         answer: CompiledModel | None = patched.patched_variant(self)
         return answer
 
+    def _patched_xml(self) -> tuple[CompiledModel, str] | None:
+        """On a cache miss: this robot's model and XML from the cached ones of the robot without its
+        overrides (not stored), or None to compile (see :meth:`_patched`)."""
+        patched = importlib.import_module("assembler.build.patched")
+        answer: tuple[CompiledModel, str] | None = patched.patched_variant_xml(self)
+        return answer
+
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:
         """Keep ``mujoco_model``, or compile one now."""
         self.mujoco_model = mujoco_model if mujoco_model is not None else self.get_model()
@@ -265,8 +272,9 @@ class RobotModel(PlacedPart):
             model, xml = compile_and_emit(self._mjspec, self.assembly_home(), self.describe(), meshes=stored)
             self._keyframe = Keyframe.of(model)
             return xml
-        self.entry_key = entry_key(self.build_inputs(), cache)
-        compiled, xml = compile_xml(self.entry_key, self._assembly, cache, store, meshes)
+        self.entry_key = key = entry_key(self.build_inputs(), cache)
+        patched = self._patched_xml if key is not None else None
+        compiled, xml = compile_xml(key, self._assembly, cache, store, meshes, patched)
         if compiled is not None:
             self._keyframe = compiled.keyframe
         return xml

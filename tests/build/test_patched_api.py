@@ -1,5 +1,7 @@
 """``assemble(robot, overrides=...).get_model()`` with the plain robot cached: patched, not compiled, and
-equal to the full compile in every model field; a structural override is compiled, with the reason."""
+equal to the full compile in every model field; ``get_xml()`` and ``save()`` with the plain robot's XML
+cached: its text with the values written in, which MuJoCo loads to the full compile's model; a
+structural override is compiled, with the reason."""
 
 from __future__ import annotations
 
@@ -9,6 +11,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import mujoco
 import numpy as np
 import pytest
 
@@ -73,6 +76,74 @@ def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
         model = assembler.assemble(robot, overrides=overrides).get_model()
     assert service.counts.patched == patched_before + 1
     assert _differences(model, compiled) == []
+
+
+WRITTEN_CASES = [(robot, overrides) for robot, overrides in CASES if "bodies" not in overrides]
+"""The variants whose XML is the plain robot's with attributes rewritten (bodies: scales change
+several attributes of several elements, and are compiled)."""
+
+
+@pytest.mark.parametrize(
+    ("robot", "overrides"),
+    WRITTEN_CASES,
+    ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(WRITTEN_CASES)],
+)
+def test_the_xml_of_a_variant_of_a_cached_robot_is_its_text_edited_and_loads_to_its_full_compile(
+    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
+) -> None:
+    _register_declared(write)
+    _settled(tmp_path)
+    compiled = assembler.assemble(robot, overrides=overrides).get_model(cache=False, store=False)
+    assembler.assemble(robot).get_xml()  # the plain robot's model and XML in the cache
+    wait_for_writes()
+    patched_before = service.counts.patched
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        xml = assembler.assemble(robot, overrides=overrides).get_xml()
+    assert service.counts.patched == patched_before + 1
+    assert _differences(mujoco.MjModel.from_xml_string(xml), compiled) == []
+
+
+def test_the_xml_of_a_variant_with_a_body_scale_is_compiled(caplog: pytest.LogCaptureFixture) -> None:
+    assembler.assemble("Sparrow7").get_xml()
+    wait_for_writes()
+    patched = service.counts.patched
+    overrides = {"bodies": [{"match": "link3", "mass_scale": 1.4}]}
+    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+        xml = assembler.assemble("Sparrow7", overrides=overrides).get_xml()
+    assert service.counts.patched == patched
+    plain = assembler.assemble("Sparrow7").get_model()
+    scaled = mujoco.MjModel.from_xml_string(xml).body("robot0_link3").mass[0]
+    assert scaled == pytest.approx(1.4 * plain.body("robot0_link3").mass[0])
+    assert "Sparrow70 compiled for its XML: not writable as attribute edits" in caplog.text
+
+
+def test_a_saved_variant_of_a_cached_robot_is_written_without_a_compile_and_loads(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    overrides = {"joint_defaults.damping": 0.45, "init_qpos": [0.2, -0.4, 0.0, -1.9, 0.0, 1.3, 0.5]}
+    compiled = assembler.assemble("Sparrow7", overrides=overrides).get_model(cache=False, store=False)
+    assembler.assemble("Sparrow7").save(tmp_path / "plain.xml")
+    wait_for_writes()
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        saved = assembler.assemble("Sparrow7", overrides=overrides).save(tmp_path / "variant.xml")
+    loaded = mujoco.MjModel.from_xml_path(str(saved))
+    assert _differences(loaded, compiled) == []
+    assert loaded.key("home").qpos[:7].tolist() == overrides["init_qpos"]  # the arm's; then the fingers
+
+
+def test_the_xml_of_a_variant_is_compiled_when_only_the_plain_model_is_cached(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    assembler.assemble("Sparrow7").get_model()  # the model, not its XML
+    wait_for_writes()
+    patched = service.counts.patched
+    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+        xml = assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": 0.25}).get_xml()
+    assert service.counts.patched == patched
+    assert mujoco.MjModel.from_xml_string(xml).joint("robot0_joint1").damping[0] == pytest.approx(0.25)
+    assert "Sparrow70 compiled for its XML: its plain robot's XML is not cached" in caplog.text
 
 
 def test_a_patched_variant_is_not_stored_and_asked_again_is_patched_again(

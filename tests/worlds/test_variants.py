@@ -17,9 +17,9 @@ import pytest
 import assembler
 from assembler.build.service import wait_for_writes
 from assembler.cli import main
+from assembler.mjcf.xml_text import XmlText
 from assembler.worlds.variants import Grid, VariantPlan, write_variants
 from assembler.worlds.variants.run import counts as variant_counts
-from assembler.worlds.variants.xml_text import XmlText
 from tests.build.test_patchable import CASES, Write, _register_declared
 from tests.build.test_patched_api import _differences, _no_compile
 from tests.conftest import use_private_cache
