@@ -103,8 +103,9 @@ EXPLANATIONS = [
     "- *4 get_xml*: warm in-process `assemble(name).get_xml()` against robosuite creating the robot and",
     "  calling `get_xml()`; `assembler build NAME -o FILE` warm against a process writing robosuite's XML;",
     "  a cold `get_xml` against a cold `get_model` (one compile of ours plus MuJoCo's XML writer).",
-    "- *5 variants*: a sweep of joint damping values in one new process per side, per variant; and",
-    "  `assembler variants --jobs 2` against `--jobs 1`.",
+    "- *5 variants*: a new variant through the API (`get_model()`, and `get_xml()` with the robot's XML",
+    "  cached), against MuJoCo compiling robosuite's XML; a sweep of joint damping values in one new",
+    "  process per side, per variant; and `assembler variants --jobs 2` against `--jobs 1`.",
     "- *6*: scenes of N robots per robot, and the same robot loaded again in one process.",
     "- *environment* (target <= 1x): `robosuite.make` and hard `env.reset()` with robosuite's robot, gripper",
     "  and base built from our specs (`assembler.robosuite.replace_robosuite()`), against robosuite's own",
@@ -134,7 +135,8 @@ REASONS: dict[str, str] = {
     "5 variants": (
         "A variant that changes only patchable values (joints, actuators, friction, init_qpos) is the "
         "robot's XML, compiled once per process, with the values written in, and an API variant is "
-        "patched onto the cached robot: both well below the references once the robot is compiled "
+        "patched onto the cached robot (its `get_xml()` the cached robot's XML with the values "
+        "written in): both well below the references once the robot is compiled "
         "(the rows marked warm and robot cached). The row that misses carries our one compile of the "
         "robot, its spec layer and MuJoCo's XML writer in a short sweep; the whole-process API "
         "variant carries the spec layer's start-up (see 1 uncached), its patch is the in-process row."

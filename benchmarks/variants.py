@@ -1,7 +1,8 @@
 """Target 5: variants.
 
 - A new variant through the API (issue 27 item 3): ``assemble(name, overrides=...).get_model()``
-  with the robot without overrides cached, so the variant is patched rather than compiled, against
+  and ``.get_xml()`` with the robot without overrides cached (its XML too), so the variant is
+  patched (its XML written from the robot's) rather than compiled, against
   MuJoCo compiling robosuite's XML of the same robot; whole process and timed inside, interleaved,
   with CPU times (target 0.5x).
 - ``write_variants`` per variant: ours (one job: the robot compiled and emitted once, each variant
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 from benchmarks.figures import Figure, ratio_figure, seconds_text
@@ -69,60 +71,73 @@ def _robosuite(name: str, count: int, compile_too: bool) -> Run:
     return run_python(imports, work + _SECOND_DONE)
 
 
-def _patched(name: str, value: float, env: dict[str, str]) -> Run:
-    """A new process: ``assemble(name, overrides=...).get_model()``; says whether it was patched."""
+def _patched(name: str, value: float, env: dict[str, str], call: str) -> Run:
+    """A new process: ``assemble(name, overrides=...).<call>`` (``get_model()`` or ``get_xml()``);
+    says whether it was patched."""
     # The model classes, schema and shipped specs loaded before the clock starts (as in a script that
     # made a robot already); the whole-process figure counts them.
     imports = "import assembler, assembler.registry.instances\nfrom assembler.build import service"
     work = (
-        f"assembler.assemble({name!r}, overrides={{'joint_defaults.frictionloss': {value!r}}}).get_model()\n"
+        f"assembler.assemble({name!r}, overrides={{'joint_defaults.frictionloss': {value!r}}}).{call}\n"
         "out['patched'] = service.counts.patched"
     )
     return run_python(imports, work, env)
 
 
+CALLS = {
+    "get_model()": "patched from the cached robot",
+    "get_xml()": "the cached robot's XML with the values written in",
+}
+"""The API calls a variant is measured with, and how each is answered without a compile."""
+
+
 def patched_variant(name: str, xml_file: Path, scratch: Path, repeats: int) -> list[Figure]:
     """A new variant of a cached robot through the API (patched), against MuJoCo compiling
     robosuite's XML file, each in a new process; a new frictionloss value each run (a patched
-    variant is not stored, so a repeated value would be patched again all the same)."""
+    variant is not stored, so a repeated value would be patched again all the same). The robot's
+    cache entry holds its XML (as a ``get_xml``, ``save`` or ``build`` leaves it) for ``get_xml()``."""
     warm = _cache(scratch / f"p-{name}")
-    run_python("import assembler", f"assembler.assemble({name!r}).get_model()", warm)
-    results = _interleave(
-        {
-            "mujoco": lambda i: run_python(
-                "import mujoco", f"mujoco.MjModel.from_xml_path({str(xml_file)!r})"
-            ),
-            "ours": lambda i: _patched(name, 0.2 + i / 1000, warm),
-        },
-        repeats,
-    )
-    reference, ours = results["mujoco"], results["ours"]
-    if ours.inner.get("patched") != 1:
-        raise RuntimeError(f"{name}: the variant was compiled, not patched")
-    inside, theirs = ours.inner["inside"], reference.inner["inside"]
+    run_python("import assembler", f"assembler.assemble({name!r}).get_xml()", warm)
+    cases: dict[str, Callable[[int], Run]] = {
+        "mujoco": lambda i: run_python("import mujoco", f"mujoco.MjModel.from_xml_path({str(xml_file)!r})")
+    }
+
+    def variant(call: str, offset: int) -> Callable[[int], Run]:
+        return lambda i: _patched(name, 0.2 + offset / 10 + i / 1000, warm, call)  # a new value each run
+
+    for offset, call in enumerate(CALLS):
+        cases[call] = variant(call, offset)
+    results = _interleave(cases, repeats)
+    reference = results["mujoco"]
     mujoco = "MuJoCo compile (robosuite XML)"
-    return [
-        ratio_figure(
-            "5 variants",
-            f"{name} API variant, whole process",
-            ours.wall,
-            f"{mujoco}, whole process",
-            reference.wall,
-            PATCHED_TARGET,
-            f"CPU {seconds_text(ours.cpu)} vs {seconds_text(reference.cpu)} "
-            f"({ours.cpu / reference.cpu:.2f}x)",
-        ),
-        ratio_figure(
-            "5 variants",
-            f"{name} API variant, in-process",
-            inside,
-            f"{mujoco}, in-process",
-            theirs,
-            PATCHED_TARGET,
-            "assemble(..., overrides=...).get_model() patched from the cached robot; imports and "
-            "shipped specs loaded before",
-        ),
-    ]
+    figures = []
+    for call, how in CALLS.items():
+        ours = results[call]
+        if ours.inner.get("patched") != 1:
+            raise RuntimeError(f"{name}: the variant's {call} was compiled, not patched")
+        shown = "API variant" if call == "get_model()" else f"API variant {call}"
+        figures += [
+            ratio_figure(
+                "5 variants",
+                f"{name} {shown}, whole process",
+                ours.wall,
+                f"{mujoco}, whole process",
+                reference.wall,
+                PATCHED_TARGET,
+                f"CPU {seconds_text(ours.cpu)} vs {seconds_text(reference.cpu)} "
+                f"({ours.cpu / reference.cpu:.2f}x)",
+            ),
+            ratio_figure(
+                "5 variants",
+                f"{name} {shown}, in-process",
+                ours.inner["inside"],
+                f"{mujoco}, in-process",
+                reference.inner["inside"],
+                PATCHED_TARGET,
+                f"assemble(..., overrides=...).{call} {how}; imports and shipped specs loaded before",
+            ),
+        ]
+    return figures
 
 
 def per_variant(name: str, count: int, scratch: Path, repeats: int) -> list[Figure]:
