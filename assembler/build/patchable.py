@@ -19,6 +19,7 @@ import numpy as np
 
 from assembler.build.patch_inputs import Resolved
 from assembler.errors import AssemblerError
+from assembler.mjcf.sizes import scaled_size
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
     "joint_defaults.frictionloss, joints[i].frictionloss": ("dof_frictionloss",),
@@ -229,13 +230,23 @@ def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
                     continue  # the world body is its own parent
                 if _owned(model, kind, int(element), prefix):
                     for target in targets:
-                        patch.set(target, int(element), getattr(model, target)[element] * size)
+                        patch.set(target, int(element), _scaled(model, target, int(element), size))
     for name in {*base.physical.geoms, *variant.physical.geoms}:
         old, new = base.physical.geoms.get(name), variant.physical.geoms.get(name)
         if new is None:
             raise NotPatchable(f"geoms: '{name}' goes back to the file's friction; compile it")
         if old is None or old.value != new.value:
             patch.set("geom_friction", model.geom(prefix + name).id, np.asarray(new.value, dtype=float))
+
+
+def _scaled(model: mujoco.MjModel, target: str, element: int, size: float) -> Any:
+    """A row of ``target`` scaled by a body's size_scale: of a geom's or site's size, the numbers
+    its type reads (as the compile scales it: :mod:`assembler.mjcf.sizes`)."""
+    row = getattr(model, target)[element]
+    if target in ("geom_size", "site_size"):
+        kind = model.geom_type[element] if target == "geom_size" else model.site_type[element]
+        return scaled_size(row, int(kind), size)
+    return row * size
 
 
 def _home_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, variant: Resolved) -> None:

@@ -23,6 +23,7 @@ import mujoco
 import numpy as np
 
 from assembler.errors import Problem
+from assembler.mjcf.sizes import scaled_size
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import BodyScale, GeomFriction
@@ -136,14 +137,10 @@ def _scale_fromto(element: mujoco.MjsGeom | mujoco.MjsSite, factor: float) -> No
 
 def _scale_body(body: mujoco.MjsBody, size: float, mass: float, inertia: float) -> None:
     if size != 1.0:
-        for geom in body.geoms:
-            _scale_vector(geom, "pos", size)
-            _scale_vector(geom, "size", size)
-            _scale_fromto(geom, size)
-        for site in body.sites:
-            _scale_vector(site, "pos", size)
-            _scale_vector(site, "size", size)
-            _scale_fromto(site, size)
+        for element in [*body.geoms, *body.sites]:
+            _scale_vector(element, "pos", size)
+            element.size = scaled_size(element.size, int(element.type), size)
+            _scale_fromto(element, size)
         for group in (body.joints, body.cameras, body.lights, body.frames, body.bodies):
             for element in group:
                 _scale_vector(element, "pos", size)
