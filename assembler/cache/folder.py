@@ -18,7 +18,8 @@ died) are removed, then the least recently used units until everything fits
 ``ASSEMBLER_CACHE_MAX_BYTES``.
 Files named by their content (converted meshes, robosuite's part files) keep their modification
 time (when they were made: a model made from a converted mesh records it) and mark a use in their
-access time instead (:mod:`assembler.cache.content`): their last use is the later of the two.
+access time instead (:mod:`assembler.cache.content`): their last use is the later of the two, and
+one used in the last :data:`IN_USE_SECONDS` is not evicted (a build may be about to read it).
 """
 
 from __future__ import annotations
@@ -32,6 +33,11 @@ from pathlib import Path
 
 GRACE_SECONDS = 600.0
 """A temporary file or claim younger than this may belong to a writer still at work."""
+
+IN_USE_SECONDS = 60.0
+"""A file named by its content used this recently may have just been handed to a build by its path
+(a converted mesh MuJoCo is about to read, a part file robosuite is about to parse): it is not
+evicted, though the folder may then stay above its bound for as long."""
 
 MODEL_FILE = re.compile(r"^\.?(?P<key>[0-9a-f]{40})(-[0-9a-f]{12}\.(mjb|xml)|\.json)(\.\w+\.tmp)?$")
 """Model manifests, model and XML files and their temporary files (:mod:`assembler.cache.store`)."""
@@ -153,13 +159,26 @@ def evict(root: Path, max_bytes: int) -> None:
         unit.last_use_ns = max(unit.last_use_ns, used)
         if part == "" and item.name.endswith(".json"):  # a model's last use is its manifest's
             unit.used_ns = stat.st_mtime_ns
-    for unit in sorted(units.values(), key=lambda unit: unit.last_use):
+    in_use = time.time_ns() - int(IN_USE_SECONDS * 1e9)
+    for (part, _), unit in sorted(units.items(), key=lambda item: item[1].last_use):
         if total <= max_bytes:
             break
+        if PARTS[part] is CONTENT_FILE and _used_since(unit.paths, in_use):
+            continue  # its times read again now: a use since the scan began counts
         for path in sorted(unit.paths, key=lambda path: path.suffix == ".json", reverse=True):
             with contextlib.suppress(OSError):  # a manifest first: its entry is gone before its files
                 path.unlink()
         total -= unit.size
+
+
+def _used_since(paths: list[Path], since_ns: int) -> bool:
+    """Whether any of ``paths`` was used (accessed or modified) at or after ``since_ns``."""
+    for path in paths:
+        with contextlib.suppress(OSError):
+            stat = path.stat()
+            if max(stat.st_atime_ns, stat.st_mtime_ns) >= since_ns:
+                return True
+    return False
 
 
 def clear(root: Path) -> FolderInfo:

@@ -346,6 +346,22 @@ def test_a_converted_mesh_in_use_outlives_older_unused_files_and_keeps_its_modif
     assert made[0].is_file() and not made[1].exists()
 
 
+def test_a_converted_mesh_handed_out_in_the_last_minute_is_not_evicted_even_over_the_bound(
+    folder: Path,
+) -> None:
+    """A bound smaller than what builds have in hand (the fuzz tests' 50M, a GR1 entry alone is 44 MB)
+    must not take a converted mesh from under the build MuJoCo is about to read it for."""
+    converted = content_folder(CONVERTED)
+    old, used = (
+        kept_content(converted, name, ".obj", lambda path: Path(path).write_bytes(b"v 0 0 0\n" * 5000))
+        for name in ("old", "used")
+    )
+    backdate(old, used)  # both made an hour ago; then one is handed to a build
+    assert kept_content(converted, "used", ".obj", lambda path: None) == used
+    evict(folder / "cache", 1)
+    assert used.is_file() and not old.exists()
+
+
 def test_a_kept_part_file_is_served_without_emitting_while_its_files_are_unchanged(folder: Path) -> None:
     emitted: list[str] = []
 
