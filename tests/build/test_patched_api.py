@@ -59,22 +59,45 @@ def _differences(ours: Any, theirs: Any) -> list[str]:
     ]
 
 
-@pytest.mark.parametrize(
-    ("robot", "overrides"), CASES, ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(CASES)]
-)
-def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
-    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
-) -> None:
+def _ids(cases: list[tuple[str, dict[str, Any]]]) -> list[str]:
+    return [next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(cases)]
+
+
+def _asked_with_the_plain_robot_cached(
+    write: Write,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    robot: str,
+    overrides: dict[str, Any],
+    xml: bool,
+) -> tuple[mujoco.MjModel, mujoco.MjModel, int]:
+    """The variant's model (with ``xml``, its ``get_xml()`` reloaded) asked for with the plain robot
+    (and its XML) cached and compiles and mesh decodes forbidden; its full compile; and how many
+    answers were patched meanwhile."""
     _register_declared(write)
     _settled(tmp_path)
     compiled = assembler.assemble(robot, overrides=overrides).get_model(cache=False, store=False)
-    assembler.assemble(robot).get_model()
+    if xml:
+        assembler.assemble(robot).get_xml()  # the plain robot's model and XML in the cache
+    else:
+        assembler.assemble(robot).get_model()
     wait_for_writes()
     patched_before = service.counts.patched
     with monkeypatch.context() as tripwire:
         _no_compile(tripwire)
-        model = assembler.assemble(robot, overrides=overrides).get_model()
-    assert service.counts.patched == patched_before + 1
+        variant = assembler.assemble(robot, overrides=overrides)
+        model = mujoco.MjModel.from_xml_string(variant.get_xml()) if xml else variant.get_model()
+    return model, compiled, service.counts.patched - patched_before
+
+
+@pytest.mark.parametrize(("robot", "overrides"), CASES, ids=_ids(CASES))
+def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
+    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
+) -> None:
+    model, compiled, patched = _asked_with_the_plain_robot_cached(
+        write, tmp_path, monkeypatch, robot, overrides, xml=False
+    )
+    assert patched == 1
     assert _differences(model, compiled) == []
 
 
@@ -83,25 +106,15 @@ WRITTEN_CASES = [(robot, overrides) for robot, overrides in CASES if "bodies" no
 several attributes of several elements, and are compiled)."""
 
 
-@pytest.mark.parametrize(
-    ("robot", "overrides"),
-    WRITTEN_CASES,
-    ids=[next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(WRITTEN_CASES)],
-)
+@pytest.mark.parametrize(("robot", "overrides"), WRITTEN_CASES, ids=_ids(WRITTEN_CASES))
 def test_the_xml_of_a_variant_of_a_cached_robot_is_its_text_edited_and_loads_to_its_full_compile(
     write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
 ) -> None:
-    _register_declared(write)
-    _settled(tmp_path)
-    compiled = assembler.assemble(robot, overrides=overrides).get_model(cache=False, store=False)
-    assembler.assemble(robot).get_xml()  # the plain robot's model and XML in the cache
-    wait_for_writes()
-    patched_before = service.counts.patched
-    with monkeypatch.context() as tripwire:
-        _no_compile(tripwire)
-        xml = assembler.assemble(robot, overrides=overrides).get_xml()
-    assert service.counts.patched == patched_before + 1
-    assert _differences(mujoco.MjModel.from_xml_string(xml), compiled) == []
+    model, compiled, patched = _asked_with_the_plain_robot_cached(
+        write, tmp_path, monkeypatch, robot, overrides, xml=True
+    )
+    assert patched == 1
+    assert _differences(model, compiled) == []
 
 
 SCALED_CASES = [(robot, overrides) for robot, overrides in CASES if "bodies" in overrides]
