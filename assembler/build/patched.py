@@ -72,21 +72,26 @@ def _tables(plain: RobotModel, robot: RobotModel) -> tuple[Resolved, Resolved]:
     return resolved, light if light is not None else Resolved.of(robot)
 
 
-def _plain_patch(robot: RobotModel) -> tuple[str, mujoco.MjModel, ModelPatch] | None:
-    """The cache key and model of ``robot``'s plain robot, and the patch that makes ``robot`` of
-    it; None, with the reason logged, when it must be compiled."""
+def _plain_patch(robot: RobotModel, with_xml: bool = False) -> tuple[mujoco.MjModel, ModelPatch, str] | None:
+    """The cached model of ``robot``'s plain robot, the patch that makes ``robot`` of it and (with
+    ``with_xml``, looked up first: without it nothing else is read; else "") its cached XML;
+    None, with the reason logged, when it must be compiled."""
     reason = _refusal(robot)
     if reason is not None:
         LOG.debug("%s compiled: %s", robot.name, reason)
         return None
     plain = unpatched_class(type(robot))(idn=robot.idn)
     base_key = entry_key(replace(robot.build_inputs(), robot=plain.part_inputs()))
+    xml = default_store().load_xml(base_key) if with_xml and base_key is not None else ""
+    if xml is None:
+        LOG.debug("%s compiled for its XML: its plain robot's XML is not cached", robot.name)
+        return None
     model = load_entry(base_key, counted=False) if base_key is not None else None
     if base_key is None or model is None:
         LOG.debug("%s compiled: the robot without its overrides is not in the model cache", robot.name)
         return None
     try:
-        return base_key, model, model_patch(model, *_tables(plain, robot))
+        return model, model_patch(model, *_tables(plain, robot)), xml
     except NotPatchable as error:
         LOG.debug("%s compiled: %s", robot.name, error)
         return None
@@ -98,7 +103,7 @@ def patched_variant(robot: RobotModel) -> CompiledModel | None:
     found = _plain_patch(robot)
     if found is None:
         return None
-    _, model, patch = found
+    model, patch, _ = found
     apply_patch(model, patch)  # load_entry's model is this caller's own (a copy when kept in memory)
     LOG.debug("%s patched from its plain robot's cached model: %s", robot.name, ", ".join(patch.fields))
     return CompiledModel(model, Keyframe.of(model))
@@ -109,15 +114,13 @@ def patched_variant_xml(robot: RobotModel) -> tuple[CompiledModel, str] | None:
     text the plain robot's emitted XML with the patch's values written in
     (:mod:`assembler.build.patched_text`); None, with the reason logged, when it must be compiled
     (the entry holds no XML, or the patch writes what no attribute holds alone: ``bodies:`` scales)."""
-    found = _plain_patch(robot)
+    found = _plain_patch(robot, with_xml=True)
     if found is None:
         return None
-    base_key, model, patch = found
-    xml = default_store().load_xml(base_key)
-    text = patched_text(model, XmlText(xml), patch) if xml is not None else None
+    model, patch, xml = found
+    text = patched_text(model, XmlText(xml), patch)
     if text is None:
-        why = "its plain robot's XML is not cached" if xml is None else "not writable as attribute edits"
-        LOG.debug("%s compiled for its XML: %s", robot.name, why)
+        LOG.debug("%s compiled for its XML: not writable as attribute edits", robot.name)
         return None
     apply_patch(model, patch)
     LOG.debug("%s written from its plain robot's cached XML: %s", robot.name, ", ".join(patch.fields))
