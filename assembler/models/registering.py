@@ -6,15 +6,24 @@ spec, in its family's :class:`Registry` (the class attribute ``registry``). A cl
 versions of one spec, an overridden spec) is not registered; its subclasses are, unless they say
 so themselves. Two different definitions of one name are an error that names both, instead of
 robosuite's silent overwrite.
+
+A registry may hold names whose classes are not made yet (:class:`Unmade`: the shipped specs, each
+read when its name is first looked up; :mod:`assembler.registry.shipped`). Looking a name up makes
+its class; anything that reads the whole table (iterating, ``len``, ``keys``, ``values``,
+``items``, ``dict(table)``) makes them all first, so a registry always answers as the complete
+table it stands for.
 """
 
 from __future__ import annotations
 
 import contextlib
 from collections.abc import Iterator
-from typing import Any, ClassVar, Generic, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, Generic, Protocol, TypeVar, overload
 
 from assembler.errors import RegistryError, did_you_mean, summarize_names
+
+if TYPE_CHECKING:  # the views dict's own methods return
+    from _collections_abc import dict_items, dict_keys, dict_values
 
 T = TypeVar("T")
 
@@ -38,17 +47,110 @@ def unknown_name(family: str, name: str, known: list[str]) -> str:
     )
 
 
+class Unmade(Protocol):
+    """Names registered before their classes are made, and how to make them."""
+
+    def holds(self, family: str, name: str) -> bool:
+        """Whether ``name`` of ``family`` is registered but its class not made yet."""
+
+    def make(self, family: str, name: str) -> None:
+        """Make and register the class of ``name`` (it is no longer held once this starts)."""
+
+    def make_all(self) -> None:
+        """Make and register every class still held, of every family."""
+
+    def state(self) -> object:
+        """What :meth:`restore` needs to undo the makes that follow."""
+
+    def restore(self, state: object) -> None:
+        """Hold again what was held at ``state`` (the makes of a failed registration are undone)."""
+
+
 class Registry(dict[str, type[T]], Generic[T]):
     """One family's classes by name (robot, base or gripper), in registration order."""
 
     def __init__(self, family: str) -> None:
         super().__init__()
         self.family = family
+        self.unmade: Unmade | None = None
+        """The names this table holds without their classes (see the module), if any."""
+
+    # ----- a name looked up makes its class; a whole read makes them all ----------------------
+
+    def _made(self, name: object) -> None:
+        if self.unmade is not None and isinstance(name, str) and self.unmade.holds(self.family, name):
+            self.unmade.make(self.family, name)
+
+    def _all_made(self) -> None:
+        if self.unmade is not None:
+            self.unmade.make_all()
+
+    def __getitem__(self, name: str) -> type[T]:
+        self._made(name)
+        return super().__getitem__(name)
+
+    def __contains__(self, name: object) -> bool:
+        self._made(name)
+        return super().__contains__(name)
+
+    @overload
+    def get(self, name: str, default: None = None, /) -> type[T] | None: ...
+    @overload
+    def get(self, name: str, default: type[T] | Any, /) -> type[T] | Any: ...
+    def get(self, name: str, default: Any = None, /) -> Any:
+        self._made(name)
+        return super().get(name, default)
+
+    def __delitem__(self, name: str) -> None:
+        self._made(name)
+        super().__delitem__(name)
+
+    def pop(self, name: str, *default: Any) -> Any:
+        self._made(name)
+        return super().pop(name, *default)
+
+    def __iter__(self) -> Iterator[str]:
+        self._all_made()
+        return super().__iter__()
+
+    def __reversed__(self) -> Iterator[str]:
+        self._all_made()
+        return super().__reversed__()
+
+    def __len__(self) -> int:
+        self._all_made()
+        return super().__len__()
+
+    def keys(self) -> dict_keys[str, type[T]]:
+        self._all_made()
+        return super().keys()
+
+    def values(self) -> dict_values[str, type[T]]:
+        self._all_made()
+        return super().values()
+
+    def items(self) -> dict_items[str, type[T]]:
+        self._all_made()
+        return super().items()
+
+    def copy(self) -> dict[str, type[T]]:
+        self._all_made()
+        return dict(super().items())
+
+    def __eq__(self, other: object) -> bool:
+        self._all_made()
+        return super().__eq__(other)
+
+    def __repr__(self) -> str:
+        self._all_made()
+        return super().__repr__()
+
+    # ----- registering -------------------------------------------------------------------------
 
     def register(self, cls: type[T]) -> type[T]:
         """Add ``cls`` under its class name; a different class of the same name is an error."""
         name = cls.__name__
-        existing = self.get(name)
+        existing = self.get(name)  # a held name is made first: two definitions are still an error
         if existing is not None and existing is not cls and source_of(existing) != source_of(cls):
             raise RegistryError(
                 f"{self.family} '{name}' is defined twice: by {source_of(existing)} and by {source_of(cls)}; "
@@ -66,13 +168,17 @@ class Registry(dict[str, type[T]], Generic[T]):
 
     @contextlib.contextmanager
     def transaction(self) -> Iterator[None]:
-        """Registrations in the block are undone if the block fails."""
-        before = dict(self)
+        """Registrations in the block are undone if the block fails (and names made in it are held
+        again)."""
+        before = dict(super().items())  # what is made: the held names stay held
+        held = self.unmade.state() if self.unmade is not None else None
         try:
             yield
         except BaseException:
             self.clear()
             self.update(before)
+            if self.unmade is not None:
+                self.unmade.restore(held)
             raise
 
 

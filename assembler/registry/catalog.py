@@ -24,6 +24,7 @@ from assembler.models import (
     PartModel,
     source_of,
 )
+from assembler.registry import shipped
 from assembler.registry.arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
@@ -141,9 +142,32 @@ def register_spec_string(text: str) -> type[PartModel]:
 
 
 def load_shipped_specs() -> list[type[PartModel]]:
-    """Register the specs this project ships; called once when ``assembler`` is imported."""
+    """Read every spec this project ships now (each is otherwise read when its name is first looked
+    up: :mod:`assembler.registry.shipped`); returns their classes."""
+    folder = shipped_specs_dir().resolve()
+    return [
+        cls
+        for table in REGISTRIES.values()  # a whole read: makes every held name
+        for cls in table.values()
+        if cls.loaded is not None
+        and cls.loaded.document.path is not None
+        and cls.loaded.document.path.is_relative_to(folder)
+    ]
+
+
+def _register_shipped_specs() -> None:
+    """Register each shipped name with its file (read on first lookup), or every shipped spec now
+    when the folder cannot be indexed plainly (see :mod:`assembler.registry.shipped`)."""
     folder = shipped_specs_dir()
-    return register_specs(folder) if folder.is_dir() else []
+    if not folder.is_dir():
+        return
+    files = shipped.scan(folder)
+    if files is None:
+        register_specs(folder)
+        return
+    index = shipped.ShippedIndex(files, lambda paths: register_specs(*paths))
+    for table in REGISTRIES.values():
+        table.unmade = index
 
 
 def add_spec_folders(folders: Iterable[str | Path]) -> list[type[PartModel]]:
@@ -253,4 +277,4 @@ def with_overrides(cls: type[P], overrides: Overrides, label: str = "override ")
     return type(cls.__name__, (cls,), namespace)
 
 
-load_shipped_specs()  # the registries always hold the shipped specs once the catalog is in use
+_register_shipped_specs()  # the registries always hold the shipped names once the catalog is in use

@@ -1,0 +1,109 @@
+"""The shipped specs: registered by name at import, each read and validated when its name is first
+looked up.
+
+Why: reading and validating all 63 shipped specs costs about 0.2 s, more than any one robot needs;
+``assemble("Panda")`` reads three (the robot, its base, its gripper). So the catalog registers each
+shipped name with the file that defines it (:class:`ShippedIndex`, a :class:`Unmade` of the
+registries) and the file is loaded the first time its name is looked up, by exactly the path that
+loads a user's spec file (:func:`assembler.registry.catalog.register_specs`), with every check. A
+spec that extends another looks its parent up the same way. Anything that reads a whole table (a
+listing, robosuite's bridge, a duplicate check against every name) loads the rest first, in one batch.
+
+The index is a scan of each file's top-level ``name:`` and ``kind:`` lines, not YAML: a file the
+scan cannot read plainly (no such line, a name twice, an unknown kind, a link out of the folder)
+makes the whole folder load at import as before, so its problem is reported as before.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any
+
+from assembler.registry.arguments import SPEC_SUFFIXES
+
+PART_KINDS = ("robot", "base", "gripper")
+"""The spec kinds that are registered parts (a scene or an experiment in the folder is neither)."""
+
+_PLACEMENTS = ("scene", "experiment")
+
+_NAME = re.compile(r"""^name:[ \t]*(['"]?)([A-Za-z_][\w.-]*)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
+_KIND = re.compile(r"""^kind:[ \t]*(['"]?)(\w+)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
+
+
+def _spec_files(folder: Path) -> list[Path]:
+    """The spec files below ``folder``, in the order :func:`assembler.spec.spec_files.spec_files` gives."""
+    return sorted(p for p in folder.rglob("*") if p.suffix in SPEC_SUFFIXES and p.is_file())
+
+
+def _scanned(file: Path, folder: Path) -> tuple[str, str] | None:
+    """(kind, name) of a part spec file; ("", "") for a scene or experiment; None if unclear."""
+    try:
+        if not file.resolve().is_relative_to(folder):
+            return None
+        text = file.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError, RuntimeError):
+        return None
+    names, kinds = _NAME.findall(text), _KIND.findall(text)
+    kind = kinds[0][1] if len(kinds) == 1 else "robot" if not kinds else ""
+    if kind in _PLACEMENTS:
+        return ("", "")
+    if len(names) != 1 or kind not in PART_KINDS:
+        return None
+    return kind, names[0][1]
+
+
+def scan(folder: Path) -> dict[tuple[str, str], Path] | None:
+    """Each part spec's (kind, name) and its file; None if any file is unclear (see the module)."""
+    resolved = folder.resolve()
+    files: dict[tuple[str, str], Path] = {}
+    for file in _spec_files(folder):
+        found = _scanned(file, resolved)
+        if found is None or found in files:
+            return None
+        if found != ("", ""):
+            files[found] = file
+    return files
+
+
+class ShippedIndex:
+    """The shipped names whose specs are not read yet, and the one way to read them."""
+
+    def __init__(self, files: dict[tuple[str, str], Path], register: Callable[[Sequence[Path]], list[Any]]):
+        self.files = files
+        """(family, name) -> the spec file, for each name not made yet."""
+        self.register = register
+        """Validates and registers spec files, all or nothing (the catalog's ``register_specs``)."""
+
+    def holds(self, family: str, name: str) -> bool:
+        return (family, name) in self.files
+
+    def make(self, family: str, name: str) -> None:
+        file = self.files.pop((family, name))  # first: registering looks the name up again
+        try:
+            made = self.register([file])
+        except BaseException:
+            self.files[(family, name)] = file  # the next lookup reports the same problem
+            raise
+        if name not in {cls.__name__ for cls in made}:  # the scan misread the file: read them all
+            self.make_all()
+
+    def make_all(self) -> None:
+        held = dict(self.files)
+        if not held:
+            return
+        self.files.clear()
+        try:
+            self.register(list(held.values()))
+        except BaseException:
+            self.files.update(held)
+            raise
+
+    def state(self) -> object:
+        return dict(self.files)
+
+    def restore(self, state: object) -> None:
+        assert isinstance(state, dict)
+        self.files.clear()
+        self.files.update(state)
