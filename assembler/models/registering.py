@@ -145,6 +145,10 @@ class Registry(dict[str, type[T]], Generic[T]):
         self._all_made()
         return super().__repr__()
 
+    def made(self) -> list[type[T]]:
+        """The classes made so far, without making the held ones (whose files are known)."""
+        return list(super().values())
+
     # ----- registering -------------------------------------------------------------------------
 
     def register(self, cls: type[T]) -> type[T]:

@@ -35,20 +35,25 @@ import json
 import assembler
 from assembler.models import REGISTRIES
 made = lambda: {family: sorted(dict.keys(table)) for family, table in REGISTRIES.items()}
-from assembler.registry.instances import assemble
-panda = assemble("Panda")
+from assembler.cache.settings import cache_dir
+panda = assembler.assemble("Panda")  # made now, and its request recorded for the next process
 after_panda = made()
+records = len(list((cache_dir() / "requests").iterdir()))
 parts = {"base": type(panda.base).__name__, "grippers": sorted(type(g).__name__ for g in panda.grippers.values())}
 sizes = {family: len(table) for family, table in REGISTRIES.items()}  # a whole read
-print(json.dumps({"after_panda": after_panda, "parts": parts, "after_len": made()}))
+print(json.dumps({"after_panda": after_panda, "parts": parts, "after_len": made(), "records": records}))
 """
 
 
-def test_a_robot_reads_only_the_specs_it_is_made_of_and_a_whole_read_makes_them_all() -> None:
+def test_a_robot_reads_only_the_specs_it_is_made_of_and_a_whole_read_makes_them_all(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))  # no record yet: made now
     seen = _run(ONE_ROBOT)
     parts = seen["parts"]
     assert isinstance(parts, dict)
     assert seen["after_panda"] == {"robot": ["Panda"], "base": [parts["base"]], "gripper": parts["grippers"]}
+    assert seen["records"] == 1  # recording the request did not need the other specs either
     batch = load_paths([shipped_specs_dir()])
     assert seen["after_len"] == {
         family: sorted(s.spec.name for s in batch if getattr(s.spec, "kind", "robot") == family)
