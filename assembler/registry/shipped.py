@@ -17,6 +17,7 @@ makes the whole folder load at import as before, so its problem is reported as b
 from __future__ import annotations
 
 import re
+import threading
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
@@ -68,37 +69,50 @@ def scan(folder: Path) -> dict[tuple[str, str], Path] | None:
 
 
 class ShippedIndex:
-    """The shipped names whose specs are not read yet, and the one way to read them."""
+    """The shipped names whose specs are not read yet, and the one way to read them.
+
+    Thread-safe: a name being made counts as held, so another thread's lookup of it waits for the
+    class instead of finding neither the name nor the class (the lock is re-entrant: making a spec
+    looks up its own name and its parent's)."""
 
     def __init__(self, files: dict[tuple[str, str], Path], register: Callable[[Sequence[Path]], list[Any]]):
         self.files = files
         """(family, name) -> the spec file, for each name not made yet."""
         self.register = register
         """Validates and registers spec files, all or nothing (the catalog's ``register_specs``)."""
+        self._making: set[tuple[str, str]] = set()
+        self._lock = threading.RLock()
 
     def holds(self, family: str, name: str) -> bool:
-        return (family, name) in self.files
+        return (family, name) in self.files or (family, name) in self._making
 
     def make(self, family: str, name: str) -> None:
-        file = self.files.pop((family, name))  # first: registering looks the name up again
-        try:
-            made = self.register([file])
-        except BaseException:
-            self.files[(family, name)] = file  # the next lookup reports the same problem
-            raise
-        if name not in {cls.__name__ for cls in made}:  # the scan misread the file: read them all
-            self.make_all()
+        with self._lock:
+            file = self.files.pop((family, name), None)
+            if file is None:  # made meanwhile by another thread, or being made by this one
+                return
+            made = self._registered({(family, name): file})
+            if name not in {cls.__name__ for cls in made}:  # the scan misread the file: read them all
+                self.make_all()
 
     def make_all(self) -> None:
-        held = dict(self.files)
-        if not held:
-            return
-        self.files.clear()
+        with self._lock:
+            held = dict(self.files)
+            self.files.clear()
+            if held:
+                self._registered(held)
+
+    def _registered(self, held: dict[tuple[str, str], Path]) -> list[Any]:
+        """Register the files of ``held``; on failure they are held again (the next lookup reports
+        the same problem)."""
+        self._making.update(held)
         try:
-            self.register(list(held.values()))
+            return self.register(list(held.values()))
         except BaseException:
             self.files.update(held)
             raise
+        finally:
+            self._making.difference_update(held)
 
     def state(self) -> object:
         return dict(self.files)

@@ -154,3 +154,28 @@ def test_a_held_spec_that_does_not_load_reports_its_problem_at_every_lookup(
     assert not index.files
     with pytest.raises(RegistryError, match="unknown robot 'LazyArmm'. Did you mean"):
         REGISTRIES["robot"].lookup("LazyArmm")
+
+
+THREADS = """\
+import json, threading
+from assembler.models import REGISTRIES
+import assembler.registry.catalog
+names = [("robot", "Panda"), ("robot", "GR1"), ("gripper", "PandaGripper"), ("base", "RethinkMount")] * 3
+start, found, failed = threading.Barrier(len(names)), [], []
+def look(family, name):
+    start.wait()
+    try:
+        found.append(REGISTRIES[family][name].__name__)
+    except Exception as error:
+        failed.append(f"{name}: {error}")
+threads = [threading.Thread(target=look, args=pair) for pair in names]
+for thread in threads: thread.start()
+for thread in threads: thread.join()
+print(json.dumps({"found": sorted(found), "failed": failed}))
+"""
+
+
+def test_threads_looking_up_shipped_names_at_once_all_find_their_class() -> None:
+    seen = _run(THREADS)
+    assert seen["failed"] == []
+    assert seen["found"] == sorted(["Panda", "GR1", "PandaGripper", "RethinkMount"] * 3)
