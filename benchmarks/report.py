@@ -118,11 +118,11 @@ REASONS: dict[str, str] = {
         "An uncached model needs the spec layer and a compile. The schema's validators are built on "
         "first use and their docstrings read only for the JSON Schema, and a cached answer imports "
         "neither; what is left for a first contact (the profile below): importing the model classes "
-        "and the schema (pydantic itself and the classes it builds) and registering every shipped "
-        "spec (all 63 are read and validated: there is no index of names to files yet), then our "
-        "compile with its mesh decode, and at exit the wait for the cache entry's writer (a Panda "
-        "entry is 44 MB). MuJoCo's compile of robosuite's XML pays only the compile. With the meshes "
-        "stored, our compile itself is at or below MuJoCo's (the in-process figures)."
+        "and the schema (pydantic itself and the classes it builds) and reading the robot's own "
+        "specs (each shipped spec is read when its name is first looked up: three of the 63 for a "
+        "Panda), then our compile with its mesh decode, and at exit the wait for the cache entry's "
+        "writer (a Panda entry is 44 MB). MuJoCo's compile of robosuite's XML pays only the compile. "
+        "With the meshes stored, our compile itself is at or below MuJoCo's (the in-process figures)."
     ),
     "2 warm": (
         "`assembler.load_model` and `assemble(name)` followed by `get_model()`, `get_xml()` or "
@@ -154,7 +154,8 @@ REASONS: dict[str, str] = {
     "environment": (
         "Our part files are kept across processes and a warm make writes and emits nothing, so "
         "`robosuite.make` is at or near robosuite's own; what is left is the bridge's registration "
-        "at import (the schema and every shipped spec, see 1 uncached) and, per hard reset, "
+        "at import (the schema, and every shipped spec: robosuite's tables are plain dicts, so each "
+        "of our names needs its class there at import) and, per hard reset, "
         "robosuite parsing our assembly's file besides its own part file."
     ),
 }

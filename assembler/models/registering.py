@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, Protocol, TypeVar, ove
 
 from assembler.errors import RegistryError, did_you_mean, summarize_names
 
-if TYPE_CHECKING:  # the views dict's own methods return
+if TYPE_CHECKING:  # the view types of dict's keys(), values() and items()
     from _collections_abc import dict_items, dict_keys, dict_values
 
 T = TypeVar("T")
@@ -54,7 +54,7 @@ class Unmade(Protocol):
         """Whether ``name`` of ``family`` is registered but its class not made yet."""
 
     def make(self, family: str, name: str) -> None:
-        """Make and register the class of ``name`` (it is no longer held once this starts)."""
+        """Make and register the class of ``name``, once: a lookup of it meanwhile waits for it."""
 
     def make_all(self) -> None:
         """Make and register every class still held, of every family."""

@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from assembler.registry.arguments import SPEC_SUFFIXES
+from assembler.spec.spec_files import spec_files
 
 PART_KINDS = ("robot", "base", "gripper")
 """The spec kinds that are registered parts (a scene or an experiment in the folder is neither)."""
@@ -31,11 +31,6 @@ _PLACEMENTS = ("scene", "experiment")
 
 _NAME = re.compile(r"""^name:[ \t]*(['"]?)([A-Za-z_][\w.-]*)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
 _KIND = re.compile(r"""^kind:[ \t]*(['"]?)(\w+)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
-
-
-def _spec_files(folder: Path) -> list[Path]:
-    """The spec files below ``folder``, in the order :func:`assembler.spec.spec_files.spec_files` gives."""
-    return sorted(p for p in folder.rglob("*") if p.suffix in SPEC_SUFFIXES and p.is_file())
 
 
 def _scanned(file: Path, folder: Path) -> tuple[str, str] | None:
@@ -59,7 +54,7 @@ def scan(folder: Path) -> dict[tuple[str, str], Path] | None:
     """Each part spec's (kind, name) and its file; None if any file is unclear (see the module)."""
     resolved = folder.resolve()
     files: dict[tuple[str, str], Path] = {}
-    for file in _spec_files(folder):
+    for file in spec_files(folder):
         found = _scanned(file, resolved)
         if found is None or found in files:
             return None
