@@ -10,8 +10,8 @@ robosuite's silent overwrite.
 A registry may hold names whose classes are not made yet (:class:`Unmade`: the shipped specs, each
 read when its name is first looked up; :mod:`assembler.registry.shipped`). Looking a name up makes
 its class; anything that reads the whole table (iterating, ``len``, ``keys``, ``values``,
-``items``, ``dict(table)``) makes them all first, so a registry always answers as the complete
-table it stands for.
+``items``, ``dict(table)``), or writes a held name directly (``table[name] = cls``, ``del``),
+makes them all first, so a registry always answers as the complete table it stands for.
 """
 
 from __future__ import annotations
@@ -101,12 +101,23 @@ class Registry(dict[str, type[T]], Generic[T]):
         self._made(name)
         return super().get(name, default)
 
+    def _before_writing(self, name: object) -> None:
+        # Writing a held name directly (robosuite's way, not register()) first makes every held
+        # name, as when all were made at import: a shipped spec that extends the name written
+        # over still extends the shipped one, and the name is not made again later.
+        if self.unmade is not None and isinstance(name, str) and self.unmade.holds(self.family, name):
+            self.unmade.make_all()
+
+    def __setitem__(self, name: str, cls: type[T]) -> None:
+        self._before_writing(name)
+        super().__setitem__(name, cls)
+
     def __delitem__(self, name: str) -> None:
-        self._made(name)
+        self._before_writing(name)
         super().__delitem__(name)
 
     def pop(self, name: str, *default: Any) -> Any:
-        self._made(name)
+        self._before_writing(name)
         return super().pop(name, *default)
 
     def __iter__(self) -> Iterator[str]:
@@ -160,7 +171,7 @@ class Registry(dict[str, type[T]], Generic[T]):
                 f"{self.family} '{name}' is defined twice: by {source_of(existing)} and by {source_of(cls)}; "
                 "rename one of them"
             )
-        self[name] = cls
+        super().__setitem__(name, cls)  # checked above: not a direct write
         return cls
 
     def lookup(self, name: str) -> type[T]:

@@ -179,3 +179,18 @@ def test_threads_looking_up_shipped_names_at_once_all_find_their_class() -> None
     seen = _run(THREADS)
     assert seen["failed"] == []
     assert seen["found"] == sorted(["Panda", "GR1", "PandaGripper", "RethinkMount"] * 3)
+
+
+WRITTEN_OVER = """\
+import json
+from assembler.models import REGISTERED_ROBOTS, ManipulatorModel
+import assembler.registry.catalog
+class MyPanda(ManipulatorModel):
+    in_registry = False
+REGISTERED_ROBOTS["Panda"] = MyPanda  # robosuite's way: an assignment, not register()
+print(json.dumps({"looked_up": REGISTERED_ROBOTS["Panda"].__name__, "listed": "Panda" in list(REGISTERED_ROBOTS)}))
+"""
+
+
+def test_a_shipped_name_written_over_before_its_spec_is_read_stays_written_over() -> None:
+    assert _run(WRITTEN_OVER) == {"looked_up": "MyPanda", "listed": True}
