@@ -74,8 +74,8 @@ def _robosuite(name: str, count: int, compile_too: bool) -> Run:
 def _patched(name: str, value: float, env: dict[str, str], call: str) -> Run:
     """A new process: ``assemble(name, overrides=...).<call>`` (``get_model()`` or ``get_xml()``);
     says whether it was patched."""
-    # The model classes, schema and shipped specs loaded before the clock starts (as in a script that
-    # made a robot already); the whole-process figure counts them.
+    # The model classes and schema imported before the clock starts (as in a script that made a
+    # robot already; the robot's own specs are read inside); the whole-process figure counts them.
     imports = "import assembler, assembler.registry.instances\nfrom assembler.build import service"
     work = (
         f"assembler.assemble({name!r}, overrides={{'joint_defaults.frictionloss': {value!r}}}).{call}\n"
@@ -134,7 +134,7 @@ def patched_variant(name: str, xml_file: Path, scratch: Path, repeats: int) -> l
                 f"{mujoco}, in-process",
                 reference.inner["inside"],
                 PATCHED_TARGET,
-                f"assemble(..., overrides=...).{call} {how}; imports and shipped specs loaded before",
+                f"assemble(..., overrides=...).{call} {how}; imports before, the robot's specs read inside",
             ),
         ]
     return figures
