@@ -59,10 +59,6 @@ def _differences(ours: Any, theirs: Any) -> list[str]:
     ]
 
 
-def _ids(cases: list[tuple[str, dict[str, Any]]]) -> list[str]:
-    return [next(iter(o)) + f"-{i}" for i, (_, o) in enumerate(cases)]
-
-
 def _asked_with_the_plain_robot_cached(
     write: Write,
     tmp_path: Path,
@@ -90,28 +86,29 @@ def _asked_with_the_plain_robot_cached(
     return model, compiled, service.counts.patched - patched_before
 
 
-@pytest.mark.parametrize(("robot", "overrides"), CASES, ids=_ids(CASES))
-def test_a_variant_of_a_cached_robot_is_patched_and_equals_its_full_compile(
-    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
-) -> None:
-    model, compiled, patched = _asked_with_the_plain_robot_cached(
-        write, tmp_path, monkeypatch, robot, overrides, xml=False
-    )
-    assert patched == 1
-    assert _differences(model, compiled) == []
-
-
 WRITTEN_CASES = [(robot, overrides) for robot, overrides in CASES if "bodies" not in overrides]
 """The variants whose XML is the plain robot's with attributes rewritten (bodies: scales change
 several attributes of several elements, and are compiled)."""
 
+ASKED = [(*case, False) for case in CASES] + [(*case, True) for case in WRITTEN_CASES]
+"""Every case by ``get_model()``, and each written case by ``get_xml()`` (its text reloaded)."""
 
-@pytest.mark.parametrize(("robot", "overrides"), WRITTEN_CASES, ids=_ids(WRITTEN_CASES))
-def test_the_xml_of_a_variant_of_a_cached_robot_is_its_text_edited_and_loads_to_its_full_compile(
-    write: Write, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: str, overrides: dict[str, Any]
+
+@pytest.mark.parametrize(
+    ("robot", "overrides", "xml"),
+    ASKED,
+    ids=[f"{'get_xml' if xml else 'get_model'}-{next(iter(o))}-{i}" for i, (_, o, xml) in enumerate(ASKED)],
+)
+def test_a_variant_of_a_cached_robot_is_patched_or_its_xml_edited_and_equals_its_full_compile(
+    write: Write,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    robot: str,
+    overrides: dict[str, Any],
+    xml: bool,
 ) -> None:
     model, compiled, patched = _asked_with_the_plain_robot_cached(
-        write, tmp_path, monkeypatch, robot, overrides, xml=True
+        write, tmp_path, monkeypatch, robot, overrides, xml
     )
     assert patched == 1
     assert _differences(model, compiled) == []
