@@ -154,8 +154,9 @@ REASONS: dict[str, str] = {
     "environment": (
         "Our part files are kept across processes and a warm make writes and emits nothing, so "
         "`robosuite.make` is at or near robosuite's own; what is left is the bridge's registration "
-        "at import (the schema, and every shipped spec: robosuite's tables are plain dicts, so each "
-        "of our names needs its class there at import) and, per hard reset, "
+        "at import (the schema, and every spec it installs: here all 63, as `replace_robosuite()` "
+        "installs our specs of robosuite's 44 names, and robosuite's tables are plain dicts that need "
+        "each name's class) and, per hard reset, "
         "robosuite parsing our assembly's file besides its own part file."
     ),
 }

@@ -59,6 +59,9 @@ class Unmade(Protocol):
     def make_all(self) -> None:
         """Make and register every class still held, of every family."""
 
+    def held(self, family: str) -> list[str]:
+        """The names of ``family`` registered but not made yet."""
+
     def state(self) -> object:
         """What :meth:`restore` needs to undo the makes that follow."""
 
@@ -159,6 +162,11 @@ class Registry(dict[str, type[T]], Generic[T]):
     def made(self) -> list[type[T]]:
         """The classes made so far, without making the held ones (whose files are known)."""
         return list(super().values())
+
+    def held_names(self) -> list[str]:
+        """The names registered without their classes yet, without making them (a lookup of one
+        makes it)."""
+        return self.unmade.held(self.family) if self.unmade is not None else []
 
     # ----- registering -------------------------------------------------------------------------
 

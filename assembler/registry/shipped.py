@@ -109,6 +109,10 @@ class ShippedIndex:
         finally:
             self._making.difference_update(held)
 
+    def held(self, family: str) -> list[str]:
+        with self._lock:  # not while another thread is making names: those are about to be made
+            return [name for held_family, name in self.files if held_family == family]
+
     def state(self) -> object:
         return dict(self.files)
 

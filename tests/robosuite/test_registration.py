@@ -61,6 +61,9 @@ stock = {family: dict(table) for family, table in tables.items()}
 
 import assembler.robosuite
 from robosuite.models.robots import create_robot
+from assembler.models import REGISTRIES
+
+held = {family: sorted(table.held_names()) for family, table in REGISTRIES.items()}
 
 new = {family: sorted(set(table) - set(stock[family])) for family, table in tables.items()}
 kinds = (MountModel, MobileBaseModel, LegBaseModel, NullBaseModel)
@@ -78,6 +81,8 @@ print("RESULT " + json.dumps({
         if tables[family][name] is not cls
     ),
     "null_gripper": [GRIPPER_MAPPING[None] is stock["gripper"][None], GRIPPER_MAPPING[None].__module__],
+    "held": held,
+    "robosuites": {family: sorted(name or "NullGripper" for name in table) for family, table in stock.items()},
     "lift_panda": type(env.robots[0].robot_model).__module__,
     "panda_controller": robosuite.load_composite_controller_config(robot="Panda")["body_parts"]["right"]["type"],
 }))
@@ -111,6 +116,15 @@ def test_robosuites_own_names_still_mean_robosuites_classes_after_the_import(aft
     assert after_import["null_gripper"] == [True, "robosuite.models.grippers.null_gripper"]
     assert after_import["lift_panda"] == "robosuite.models.robots.manipulators.panda_robot"
     assert after_import["panda_controller"] == "OSC_POSE"
+
+
+def test_the_import_reads_no_spec_of_a_name_robosuite_uses_itself(after_import: Any) -> None:
+    # only replace_robosuite() installs those, and a lookup reads one when it is asked for
+    held = after_import["held"]
+    assert {"Panda", "GR1"} <= set(held["robot"]) and "PandaGripper" in held["gripper"]
+    assert "RethinkMount" in held["base"]
+    for family, names in held.items():
+        assert set(names) <= set(after_import["robosuites"][family]), family
 
 
 # ----- replacing robosuite's own ------------------------------------------------------------------
