@@ -128,7 +128,7 @@ def _run(args: argparse.Namespace, scratch: Path) -> tuple[dict[str, Any], list[
         guarded(name, lambda name=name: in_process.repeated(name, in_process_repeats))
     if robosuite:
         guarded("environments", lambda: environments.environment_figures(repeats))
-    counts = [1, 2, 4] if quick else [1, 2, 4, 8, 16, 32]
+    counts = [1, 2, 4] if quick else [1, 2, 4, 8, 16, 32, 64]
     scale_rows, scale_figure = fresh.scale(counts, repeats)
     record(scale_figure)
     found = {} if quick else _profiles(figures, xml_robots[0] if robosuite else None, scratch)

@@ -86,6 +86,14 @@ def require_at_least(have: Census, want: Census, what: str, exempt: frozenset[st
         raise ElementsLost(what, shortfall)
 
 
+def require_growth(assembly: mujoco.MjSpec, before: Census, want: Census, what: str) -> None:
+    """Raise :class:`ElementsLost` when ``assembly`` grew by fewer elements of some kind than
+    ``want`` since it held ``before``."""
+    grown = of_spec(assembly)
+    grown.subtract(before)
+    require_at_least(grown, want, what)
+
+
 def check_compiled(spec: mujoco.MjSpec, model: mujoco.MjModel, what: str) -> None:
     """The compiled ``model`` holds every element of ``spec``, except those MuJoCo discards on the
     spec's own request (``discardvisual``, ``fusestatic``)."""

@@ -58,14 +58,20 @@ class RobotModel(PlacedPart):
     # ----- building -----------------------------------------------------------------------
 
     def build_mjspec(self) -> mujoco.MjSpec:
-        """A new assembly of the robot, its base and grippers, placed; without keyframe, not compiled."""
+        """A new assembly of the robot, its base and grippers, placed; without keyframe, not compiled.
+        Nothing of the parts is dropped in silence: a loss is a bug (``census.ElementsLost``)."""
         assembly = compose.new_assembly(self.source.globals_xml)
-        self.build_into(assembly)
+        before = census.of_spec(assembly)
+        self.attach_into(assembly)
+        census.require_growth(
+            assembly, before, self.census_contribution(), f"building robot '{type(self).__name__}'"
+        )
         return assembly
 
-    def build_into(self, assembly: mujoco.MjSpec) -> None:
-        """Attach this robot, its base and its grippers to ``assembly`` (used for scenes too)."""
-        before = census.of_spec(assembly)
+    def attach_into(self, assembly: mujoco.MjSpec) -> None:
+        """Attach this robot, its base and its grippers to ``assembly``, placed, unchecked: a scene
+        checks its robots' elements once for all of them (counting a spec's elements costs as much
+        as the spec is large, so a check per robot of a growing scene would cost N² in its robots)."""
         robot = self.part_mjspec()
         if self.base is None:
             compose.attach_at_world(assembly, robot, self.naming_prefix)
@@ -73,9 +79,6 @@ class RobotModel(PlacedPart):
             self.base.carry(assembly, robot, self.naming_prefix, self.base_offset - self.base.top_offset)
         self._attach_grippers(assembly)
         self._apply_placement(assembly)
-        grown = census.of_spec(assembly)
-        grown.subtract(before)  # nothing of the parts dropped in silence: a loss is a bug
-        census.require_at_least(grown, self.census_contribution(), f"building robot '{type(self).__name__}'")
 
     def census_contribution(self) -> Census:
         """How many elements of each kind building this robot with its base and grippers adds to an

@@ -18,7 +18,7 @@ import numpy as np
 from assembler.build.compile import compile_home
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, spec_homes
-from assembler.mjcf import compose
+from assembler.mjcf import census, compose
 from assembler.models import RobotModel
 from assembler.registry.arguments import is_spec_file
 from assembler.registry.catalog import register_specs
@@ -109,19 +109,20 @@ def assemble_entries(
 
 
 def place_robots(spec: SceneSpec, robots: Sequence[RobotModel]) -> Scene:
-    """Place assembled robots (one per entry of ``spec``, in order) into one MuJoCo spec."""
-    assembly: mujoco.MjSpec | None = None
+    """Place assembled robots (one per entry of ``spec``, in order) into one MuJoCo spec, and check
+    once that it holds every element of every robot's parts (see :meth:`RobotModel.attach_into`)."""
+    assembly = compose.new_assembly(robots[0].source.globals_xml)  # the schema requires a robot
+    assembly.modelname = spec.name
+    if spec.floor:
+        floor = mujoco.MjSpec.from_string(FLOOR_XML)
+        compose.attach(assembly, floor, assembly.worldbody.add_frame(), "scene_")
+    before, want = census.of_spec(assembly), census.Census()
     for entry, robot in zip(spec.robots, robots, strict=True):
         robot.set_base_xpos(np.array(entry.pos))
         robot.set_base_ori(np.array(entry.ori))
-        if assembly is None:
-            assembly = compose.new_assembly(robot.source.globals_xml)
-            assembly.modelname = spec.name
-            if spec.floor:
-                floor = mujoco.MjSpec.from_string(FLOOR_XML)
-                compose.attach(assembly, floor, assembly.worldbody.add_frame(), "scene_")
-        robot.build_into(assembly)
-    assert assembly is not None  # the schema requires at least one robot
+        robot.attach_into(assembly)
+        want.update(robot.census_contribution())
+    census.require_growth(assembly, before, want, f"building scene '{spec.name}'")
     return Scene(spec=spec, robots=list(robots), mjspec=assembly)
 
 
