@@ -7,19 +7,21 @@
 ``import assembler`` is light: each part of the API (and the shipped specs, registered when the
 registry is first used) is imported on first use, so a command that only needs the command line or
 the compiled-model cache never pays for the schema classes or for reading every spec; nor does
-``assemble(name).get_model()`` of a robot asked for before (see :mod:`assembler.registry.deferred`).
+``assemble(name).get_model()`` of a robot asked for before (see :mod:`assembler.answers.deferred`).
 """
 
 from __future__ import annotations
 
 import importlib
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
+from assembler import compiler as _compiler
 from assembler.errors import AssemblerError, JointAttributeError, MjcfError, Problem, RegistryError, SpecError
 from assembler.version import __version__
 
 if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imported on first use
-    from assembler.build.load_model import load_model
+    from assembler.answers.load_model import load_model
     from assembler.models import (
         GripperModel,
         HumanoidModel,
@@ -55,13 +57,23 @@ if TYPE_CHECKING:  # for type checkers and editors; at run time each name is imp
     from assembler.worlds.scene import Scene, build_scene, load_scene
     from assembler.worlds.variants import VariantPlan, write_variants
 
+def _variant_patcher() -> ModuleType:
+    """The patcher of robots with overrides (:mod:`assembler.patch.robot_variant`), loaded on a cache
+    miss. The package root wires it into the compiler: the patcher reads the registry and the model
+    classes, above the models that ask for it (see :data:`assembler.compiler.variant_patcher`)."""
+    return importlib.import_module("assembler.patch.robot_variant")
+
+
+_compiler.variant_patcher = _variant_patcher
+
+
 _LAZY: dict[str, str] = {
     # assemble and create_robot answer a robot asked for before from the cache, reading no spec
-    # (assembler.registry.deferred); type checkers see the registry's own (a deferred robot is one).
-    "assemble": "assembler.registry.deferred",
+    # (assembler.answers.deferred); type checkers see the registry's own (a deferred robot is one).
+    "assemble": "assembler.answers.deferred",
     "create_base": "assembler.registry.instances",
     "create_gripper": "assembler.registry.instances",
-    "create_robot": "assembler.registry.deferred",
+    "create_robot": "assembler.answers.deferred",
     "add_spec_folders": "assembler.registry.catalog",
     "class_from_spec": "assembler.registry.catalog",
     "load_shipped_specs": "assembler.registry.catalog",
@@ -75,7 +87,7 @@ _LAZY: dict[str, str] = {
     "load_experiment": "assembler.worlds.experiment",
     "load_paths": "assembler.spec.spec_files",
     "load_string": "assembler.spec.spec_files",
-    "load_model": "assembler.build.load_model",
+    "load_model": "assembler.answers.load_model",
     "GripperModel": "assembler.models",
     "HumanoidModel": "assembler.models",
     "HumanoidUpperBodyModel": "assembler.models",
@@ -105,12 +117,15 @@ _LAZY: dict[str, str] = {
 """Each public name imported on first use, and the module it comes from."""
 
 SUBPACKAGES: tuple[str, ...] = (
-    "build",
+    "answers",
     "cache",
     "cli",
+    "compiler",
     "files",
+    "importers",
     "mjcf",
     "models",
+    "patch",
     "registry",
     "spec",
     "tools",

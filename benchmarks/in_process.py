@@ -11,7 +11,7 @@ from collections.abc import Callable
 import mujoco
 
 import assembler
-from assembler.build import service
+from assembler.compiler import service
 from benchmarks.figures import Figure, ratio_figure
 from benchmarks.timing import interleaved
 

@@ -76,7 +76,7 @@ def _patched(name: str, value: float, env: dict[str, str], call: str) -> Run:
     says whether it was patched."""
     # The model classes and schema imported before the clock starts (as in a script that made a
     # robot already; the robot's own specs are read inside); the whole-process figure counts them.
-    imports = "import assembler, assembler.registry.instances\nfrom assembler.build import service"
+    imports = "import assembler, assembler.registry.instances\nfrom assembler.compiler import service"
     work = (
         f"assembler.assemble({name!r}, overrides={{'joint_defaults.frictionloss': {value!r}}}).{call}\n"
         "out['patched'] = service.counts.patched"

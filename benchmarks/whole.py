@@ -107,7 +107,7 @@ def entry_path(name: str, env: dict[str, str]) -> str:
     """The ``.mjb`` file of the cache entry that holds ``name`` in the cache ``env`` names."""
     return str(
         run_python(
-            "import assembler\nfrom assembler.build.service import default_store\n"
+            "import assembler\nfrom assembler.compiler.service import default_store\n"
             "from assembler.cache.key import cache_key\nfrom assembler.registry import instances",
             f"s = default_store(); e = s.entry(cache_key(instances.assemble({name!r}).build_inputs()))\n"
             'out["path"] = str(s.directory / e.model)',

@@ -96,15 +96,72 @@ def test_no_module_imports_itself_back_through_others() -> None:
     assert _cycles(_graph()) == []
 
 
+LAYERS: tuple[tuple[str, ...], ...] = (
+    ("assembler.version",),
+    ("assembler.spec.fieldpath",),  # a field's path: a plain value the errors name
+    ("assembler.errors",),
+    ("assembler.files",),
+    ("assembler.spec",),
+    ("assembler.mjcf",),
+    ("assembler.cache",),
+    ("assembler.urdf",),
+    ("assembler.compiler",),
+    ("assembler.models",),
+    ("assembler.registry",),
+    ("assembler.patch",),
+    ("assembler.answers",),
+    ("assembler.worlds",),
+    ("assembler.robosuite", "assembler.warp", "assembler.mjlab"),
+    ("assembler.tools",),
+    ("assembler.importers",),
+    ("assembler.cli",),
+    ("assembler.robosuite.__main__",),  # `python -m assembler.robosuite`: a command, ended as the CLI ends
+    ("assembler",),  # the package root: the public API, and the one place that wires layers together
+)
+"""The packages bottom to top: a module imports only from its own package or the layers below it
+(a model produces values, the compiler takes them; nothing calls back up). Within a layer of
+several packages, none imports another. The longest name that prefixes a module decides its layer."""
+
+
+def _layer(module: str) -> tuple[int, str]:
+    matches = [
+        (len(name), index, name)
+        for index, names in enumerate(LAYERS)
+        for name in names
+        if module == name or module.startswith(f"{name}.")
+    ]
+    _, index, name = max(matches)
+    return index, name
+
+
+def test_packages_import_only_their_own_layer_and_the_layers_below() -> None:
+    upward = []
+    for name, path in MODULES.items():
+        here, package = _layer(name)
+        for node, target in _imports(ast.parse(path.read_text())):
+            owner = _owner(target)
+            if owner is None or owner == name:
+                continue
+            there, other = _layer(owner)
+            if there > here or (there == here and other != package):
+                upward.append(f"{name}:{getattr(node, 'lineno', 0)} imports {owner}")
+    assert upward == []
+
+
+def test_every_package_has_its_place_in_the_order() -> None:
+    named = {name for names in LAYERS for name in names}
+    packages = {_module_name(path) for path in PACKAGE.glob("*/__init__.py")}
+    assert sorted(packages - named) == []
+
+
 FACADE = "assembler"
 """The package's own ``__init__``: the public API, imported on first use (``import assembler`` must
 stay light, issue 16), with the names also imported under TYPE_CHECKING for type checkers."""
 
 
 DEFERRED = {
-    ("assembler.cli", "assembler.cli.quick_build"): "a cached build is answered before the commands load",
+    ("assembler.cli", "assembler.cli.cached_build"): "a cached build is answered before the commands load",
     ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
-    ("assembler.cli", "assembler.cache.settings"): "it imports MuJoCo: loaded inside the command's ending",
     (
         "assembler.robosuite.hook",
         "assembler.robosuite",
@@ -117,15 +174,11 @@ DEFERRED = {
         "assembler.robosuite.__main__",
         "assembler.robosuite.bridge",
     ): "after robosuite is found (else one line)",
-    ("assembler.build.load_model", "assembler.build.request"): "a cached model is answered without specs",
+    ("assembler.answers.load_model", "assembler.answers.request"): "a cached model is answered without specs",
+    ("assembler.answers.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
+    ("assembler.answers.deferred", "assembler.answers.request"): "a robot asked for before reads no spec",
     (
-        "assembler.models.robot_model",
-        "assembler.build.patched",
-    ): "a cache miss of a robot with overrides tries a patch, which reads the model classes",
-    ("assembler.registry.deferred", "assembler.registry.instances"): "a robot asked for before reads no spec",
-    ("assembler.registry.deferred", "assembler.build.request"): "a robot asked for before reads no spec",
-    (
-        "assembler.registry.deferred",
+        "assembler.answers.deferred",
         "assembler.files.bundles",
     ): "a cached save copies assets (ElementTree) only for a model naming a file in the cache",
     (
@@ -171,8 +224,9 @@ def test_every_module_has_a_docstring() -> None:
     assert missing == []
 
 
-def test_the_readme_maps_every_package_in_one_line() -> None:
-    readme = (PACKAGE.parent / "README.md").read_text()
+def test_the_package_map_names_every_package_in_one_line() -> None:
+    page = PACKAGE.parent / "docs" / "architecture.md"
+    readme = (page if page.is_file() else PACKAGE.parent / "README.md").read_text()
     packages = sorted(p.name for p in PACKAGE.iterdir() if (p / "__init__.py").is_file())
     unmapped = [name for name in packages if f"`{name}/`" not in readme and f"`{name}/`," not in readme]
     assert unmapped == []

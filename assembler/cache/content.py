@@ -12,7 +12,7 @@ Files are written whole under a temporary name and moved into place with one ren
 processes making one file agree on it.
 
 With the cache off (``--no-cache``, ``ASSEMBLER_NO_CACHE``) or its folder unwritable, the files go
-to a folder of the process's own (:func:`~assembler.cache.settings.scratch_dir`): nothing is read
+to a folder of the process's own (:func:`~assembler.files.cache_location.scratch_dir`): nothing is read
 from the cache.
 """
 
@@ -30,7 +30,7 @@ from pathlib import Path
 
 from assembler.cache.dependencies import Recorder
 from assembler.cache.file_state import FileState, buffer_digest, check_all, file_digest
-from assembler.cache.settings import cache_dir, cache_disabled, scratch_dir
+from assembler.files.cache_location import cache_dir, cache_disabled, scratch_dir
 
 CONVERTED = "converted-meshes"
 """Meshes converted to OBJ (and renamed copies), below the cache folder."""

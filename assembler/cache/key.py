@@ -1,7 +1,7 @@
 """The cache key of an assembly: a hash of its build inputs, computed without reading any MJCF
 (ccache's "direct mode").
 
-The key covers the :class:`~assembler.cache.inputs.BuildInputs` (each part's validated spec,
+The key covers the :class:`~assembler.cache.build_inputs.BuildInputs` (each part's validated spec,
 class, idn, MJCF file and API joint edits; the robot's placement), the assembler's own code and
 MuJoCo's version. The files the compile reads are not in the key: the entry lists them (see
 :mod:`assembler.cache.dependencies`) and a lookup checks them.
@@ -19,7 +19,7 @@ from pathlib import Path
 
 import mujoco
 
-from assembler.cache.inputs import BuildInputs
+from assembler.cache.build_inputs import BuildInputs
 from assembler.version import __version__
 
 FORMAT = 4

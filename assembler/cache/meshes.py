@@ -38,7 +38,7 @@ import mujoco
 from assembler.cache.file_state import Stat, file_digest, settled, stat_of
 from assembler.cache.folder import GRACE_SECONDS, MESH_FILE
 from assembler.cache.folder import evict as evict_folder
-from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
+from assembler.files.cache_location import cache_dir, cache_disabled, max_bytes
 
 FORMAT = 2
 """Version of the entry and record layout; part of every key."""

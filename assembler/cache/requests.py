@@ -35,7 +35,7 @@ import mujoco
 
 from assembler.cache.dependencies import Dependency, verify
 from assembler.cache.key import code_fingerprint, resolution_environment
-from assembler.cache.settings import cache_dir
+from assembler.files.cache_location import cache_dir
 from assembler.files.inputs import note_inputs
 
 FORMAT = 1

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 
 from assembler.cli.arguments import build_parser, parse
 from assembler.cli.endings import end_cleanly
+from assembler.files.cache_location import switched_off
 
 __all__ = ["build_parser", "main", "parse"]
 
@@ -23,10 +24,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     def command() -> int:
         args = parse(argv)
-        settings = importlib.import_module("assembler.cache.settings")  # imports MuJoCo: inside the ending
-        with settings.switched_off(bool(getattr(args, "no_cache", False))):
+        with switched_off(bool(getattr(args, "no_cache", False))):
             if args.command == "build":  # a build made before is answered before any spec is read
-                answered = importlib.import_module("assembler.cli.quick_build").answer(args)
+                answered = importlib.import_module("assembler.cli.cached_build").answer(args)
                 if answered is not None:
                     return int(answered)
             dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing

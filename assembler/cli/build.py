@@ -1,6 +1,6 @@
 """``assembler build``: write a robot's standalone MJCF (to a file, a bundle folder or stdout), and
 record the request so the same build next time is answered before any spec is read
-(:mod:`assembler.cli.quick_build`)."""
+(:mod:`assembler.cli.cached_build`)."""
 
 from __future__ import annotations
 
@@ -8,9 +8,9 @@ import argparse
 import sys
 from pathlib import Path
 
-from assembler.build.request import record_answer
+from assembler.answers.request import record_answer
+from assembler.cli.cached_build import build_flags, request_of, write_xml
 from assembler.cli.common import assembled, idle_override_warnings, use_cache
-from assembler.cli.quick_build import request_of, robot_file, write_xml
 from assembler.tools.engine_check import check_with_mujoco_warp
 
 
@@ -28,5 +28,7 @@ def run(args: argparse.Namespace) -> int:
         print(note, file=sys.stderr)
     request = request_of(args)
     if request is not None:
-        record_answer(request, robot, [Path(folder) for folder in args.specs], robot_file(args), notes)
+        record_answer(
+            request, robot, [Path(folder) for folder in args.specs], build_flags(args).robot_file, notes
+        )
     return 0

@@ -5,13 +5,13 @@ from __future__ import annotations
 
 import argparse
 
-from assembler.build.service import clear, default_store
 from assembler.cache import cache_disabled
 from assembler.cache.folder import LABELS
 from assembler.cache.folder import info as folder_info
-from assembler.cache.settings import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.cli.common import table
+from assembler.compiler.service import clear, default_store
 from assembler.errors import AssemblerError
+from assembler.files.cache_location import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.files.paths import display_path
 
 

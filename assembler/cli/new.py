@@ -8,9 +8,9 @@ from pathlib import Path
 
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER
-from assembler.tools.new import write_new_spec
-from assembler.tools.new.checking import build_problems
-from assembler.tools.new.packages import environment, found_packages
+from assembler.importers import write_new_spec
+from assembler.importers.checking import build_problems
+from assembler.importers.packages import environment, found_packages
 
 
 def run(args: argparse.Namespace) -> int:

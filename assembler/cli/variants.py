@@ -9,8 +9,8 @@ from typing import Literal
 
 from assembler.cli.common import gripper_choices, robot_name
 from assembler.files.paths import display_path
-from assembler.registry.arguments import DEFAULT, spec_file_path
 from assembler.registry.lookup import robot_class
+from assembler.spec.part_arguments import DEFAULT, spec_file_path
 from assembler.worlds.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
 
 

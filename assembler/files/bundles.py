@@ -21,8 +21,8 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 from pathlib import Path
 
-from assembler.cache.settings import volatile_folders
 from assembler.errors import AssemblerError
+from assembler.files.cache_location import volatile_folders
 from assembler.files.paths import display_path
 from assembler.files.writing import (
     check_target,

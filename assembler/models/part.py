@@ -17,8 +17,8 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.build.compile import compile_home
-from assembler.cache.inputs import JointEdit, PartInputs
+from assembler.cache.build_inputs import JointEdit, PartInputs
+from assembler.compiler.compile import compile_home
 from assembler.errors import AssemblerWarning, Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.files.paths import display_path, locate_model_file
 from assembler.mjcf import census, compose

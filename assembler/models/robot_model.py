@@ -2,23 +2,23 @@
 
 Building is pure: :meth:`RobotModel.build_mjspec` makes a new assembly from the parts (robot, base,
 grippers), their joint values and the robot's placement. Compiling belongs to the compile service
-(:mod:`assembler.build.service`), which is given the build inputs and, only on a cache miss, the
+(:mod:`assembler.compiler.service`), which is given the build inputs and, only on a cache miss, the
 build itself. Name lists come from the parts, so they cannot go stale the way robosuite's
 ``_elements`` do after a mobile base is merged.
 """
 
 from __future__ import annotations
 
-import importlib
 from pathlib import Path
 from typing import Any, ClassVar
 
 import mujoco
 import numpy as np
 
-from assembler.build.compile import compile_and_emit, compile_home
-from assembler.build.service import Assembly, CompiledModel, compile_model, compile_xml, entry_key
-from assembler.cache.inputs import BuildInputs, JointEdit
+from assembler import compiler
+from assembler.cache.build_inputs import BuildInputs, JointEdit
+from assembler.compiler.compile import compile_and_emit, compile_home
+from assembler.compiler.service import Assembly, CompiledModel, compile_model, compile_xml, entry_key
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.files.bundles import save_model
 from assembler.mjcf import census, compose
@@ -249,17 +249,19 @@ class RobotModel(PlacedPart):
 
     def _patched(self) -> CompiledModel | None:
         """On a cache miss: this robot patched from the cached model of the robot without its
-        overrides (not stored), or None to compile (:mod:`assembler.build.patched`, which reads the
-        model classes, hence imported late)."""
-        patched = importlib.import_module("assembler.build.patched")
-        answer: CompiledModel | None = patched.patched_variant(self)
+        overrides (not stored), or None to compile: the patcher the package root wired into the compiler
+        (:data:`assembler.compiler.variant_patcher`), which reads the model classes."""
+        if compiler.variant_patcher is None:
+            return None
+        answer: CompiledModel | None = compiler.variant_patcher().patched_variant(self)
         return answer
 
     def _patched_xml(self) -> tuple[CompiledModel, str] | None:
         """On a cache miss: this robot's model and XML from the cached ones of the robot without its
         overrides (not stored), or None to compile (see :meth:`_patched`)."""
-        patched = importlib.import_module("assembler.build.patched")
-        answer: tuple[CompiledModel, str] | None = patched.patched_variant_xml(self)
+        if compiler.variant_patcher is None:
+            return None
+        answer: tuple[CompiledModel, str] | None = compiler.variant_patcher().patched_variant_xml(self)
         return answer
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:

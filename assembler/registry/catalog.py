@@ -25,7 +25,6 @@ from assembler.models import (
     source_of,
 )
 from assembler.registry import shipped
-from assembler.registry.arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
     LoadedSpec,
@@ -38,6 +37,7 @@ from assembler.spec.documents import (
 )
 from assembler.spec.documents import apply_overrides as apply_document_overrides
 from assembler.spec.fieldpath import FieldPath
+from assembler.spec.part_arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
 from assembler.spec.schema import SPEC_KINDS, BaseSpec, PartSpec, RobotSpec
 from assembler.spec.spec_files import load_paths, load_string
 

@@ -15,10 +15,10 @@ from assembler.models import (
     RobotBaseModel,
     RobotModel,
 )
-from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import with_overrides
 from assembler.spec.documents import Overrides
 from assembler.spec.fieldpath import FieldPath
+from assembler.spec.part_arguments import DEFAULT
 
 
 def create_robot(robot_name: str, *args: object, overrides: Overrides = None, **kwargs: object) -> RobotModel:

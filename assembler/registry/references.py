@@ -10,9 +10,9 @@ from collections.abc import Sequence
 
 from assembler.errors import Problem, RegistryError
 from assembler.models import REGISTRIES
-from assembler.registry.arguments import DEFAULT, is_spec_file
 from assembler.spec.documents import LoadedSpec, LocatedDocument
 from assembler.spec.fieldpath import FieldPath
+from assembler.spec.part_arguments import DEFAULT, is_spec_file
 from assembler.spec.schema import PartSpec, RobotSpec, SceneRobot
 
 

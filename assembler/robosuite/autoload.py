@@ -20,9 +20,9 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError, AssemblerWarning, RegistryError
 from assembler.models import ManipulatorModel, PartModel
-from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import register_specs, with_overrides
 from assembler.robosuite.registries import install, offered
+from assembler.spec.part_arguments import DEFAULT
 from assembler.worlds.experiment import build_experiment, read_experiment
 
 SPECS_VARIABLE = "ASSEMBLER_ROBOSUITE_SPECS"

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, display_path
-from assembler.registry.arguments import SPEC_SUFFIXES
+from assembler.spec.part_arguments import SPEC_SUFFIXES
 from assembler.spec.documents import (
     LoadedSpec,
     LocatedDocument,

@@ -2,7 +2,7 @@
 
 ``put_model`` gets per-world arrays (``batch_sizes``) for every field some world varies and for
 the constants MuJoCo derives from them; each row is that world's value as the CPU patch gives it
-(equal to a full compile, :mod:`assembler.build.patchable`); then ``mujoco_warp.set_const``
+(equal to a full compile, :mod:`assembler.patch.patchable`); then ``mujoco_warp.set_const``
 recomputes the derived constants on the device. Each world starts at its robot's home pose.
 """
 

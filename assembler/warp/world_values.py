@@ -1,7 +1,7 @@
 """Each world's values of the fields a variant plan varies, from one compiled model patched in turn.
 
 Every variant of the plan is resolved against the robot (a spec validation, no MJCF preparation),
-turned into a patch (:mod:`assembler.build.patchable`), written into one scratch model, its derived
+turned into a patch (:mod:`assembler.patch.patchable`), written into one scratch model, its derived
 constants recomputed with ``mj_setConst``, and the varied fields read back; then the scratch model
 is restored. Nothing is compiled but the robot itself, and no model is copied per world.
 """
@@ -15,11 +15,11 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.build.derived import apply_patch, dampratio_rule
-from assembler.build.patch_inputs import Resolved, resolve_variant
-from assembler.build.patchable import ModelPatch, NotPatchable, model_patch
 from assembler.errors import AssemblerError
 from assembler.models import RobotModel
+from assembler.patch.derived import apply_patch, dampratio_rule
+from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import Override
 
 SET_CONST_OUTPUTS: tuple[str, ...] = (

@@ -15,18 +15,18 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from assembler.build.compile import compile_home
+from assembler.compiler.compile import compile_home
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, spec_homes
 from assembler.mjcf import census, compose
 from assembler.models import RobotModel
-from assembler.registry.arguments import is_spec_file
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
 from assembler.registry.references import placement_reference_problems
 from assembler.spec.documents import LocatedDocument, Override, read_validated
 from assembler.spec.documents.problems import reading_order
 from assembler.spec.fieldpath import FieldPath
+from assembler.spec.part_arguments import is_spec_file
 from assembler.spec.schema import SceneRobot, SceneSpec
 
 FLOOR_XML = """<mujoco>

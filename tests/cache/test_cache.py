@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.build import service
-from assembler.build.service import default_store, wait_for_writes
 from assembler.cli import main
+from assembler.compiler import service
+from assembler.compiler.service import default_store, wait_for_writes
 from assembler.files.paths import package_root
 from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 
@@ -357,7 +357,7 @@ WORKER = textwrap.dedent(
     """
     import assembler, assembler.cache
     assembler.assemble("Sparrow7").get_model()
-    print(assembler.build.service.counts.misses + assembler.build.service.counts.hits)
+    print(assembler.compiler.service.counts.misses + assembler.compiler.service.counts.hits)
     """
 )
 
@@ -462,8 +462,8 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         edit(package / "meshes" / "tet.obj", TETRAHEDRON_OBJ, 3600)
         edit(package / "robot.xml", MESH_ARM_MJCF.replace('size="0.05 0.05"', f'size="{radius} 0.05"'), 3600)
         script = (
-            "import sys, assembler, assembler.build.service; (cls,) = assembler.register_specs(sys.argv[1]); "
-            "m = assembler.assemble(cls.__name__).get_model(); assembler.build.service.wait_for_writes(); "
+            "import sys, assembler, assembler.compiler.service; (cls,) = assembler.register_specs(sys.argv[1]); "
+            "m = assembler.assemble(cls.__name__).get_model(); assembler.compiler.service.wait_for_writes(); "
             "print(m.geom('robot0_base_col').size[0])"
         )
         environment = {

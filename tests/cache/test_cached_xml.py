@@ -12,10 +12,10 @@ from pathlib import Path
 import pytest
 
 import assembler
-from assembler.build import service
-from assembler.build.service import default_store, wait_for_writes
 from assembler.cache.key import cache_key
 from assembler.cache.mesh_swap import wait_for_fillers
+from assembler.compiler import service
+from assembler.compiler.service import default_store, wait_for_writes
 from assembler.files.paths import package_root
 from assembler.mjcf.emit import to_xml
 from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache

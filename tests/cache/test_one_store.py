@@ -24,12 +24,12 @@ import pytest
 
 import assembler
 from assembler import cache
-from assembler.build import service
-from assembler.build.service import wait_for_writes
 from assembler.cache.content import CONVERTED, PARTS, content_folder
 from assembler.cache.content import kept_file as kept_content
 from assembler.cache.folder import evict
 from assembler.cli import main
+from assembler.compiler import service
+from assembler.compiler.service import wait_for_writes
 from assembler.robosuite.files import kept_file, written_file
 from assembler.urdf.meshes import converted_dir, importable
 from assembler.urdf.packages import package_folders
@@ -266,9 +266,9 @@ def test_a_model_saved_from_python_still_loads_after_the_cache_is_removed(
 
 
 SAVED_IN_A_NEW_PROCESS = (
-    "import sys, assembler, assembler.build.service; "
+    "import sys, assembler, assembler.compiler.service; "
     "robot = assembler.assemble('UR5'); robot.save(sys.argv[1]); "
-    "assembler.build.service.wait_for_writes(); print(type(robot).__name__)"
+    "assembler.compiler.service.wait_for_writes(); print(type(robot).__name__)"
 )
 
 

@@ -14,11 +14,11 @@ from pathlib import Path
 import pytest
 
 import assembler
-from assembler.build.repeat import _record_of, keyed
-from assembler.build.service import wait_for_writes
+from assembler.answers.records import _record_of, keyed
 from assembler.cache import requests as request_records
 from assembler.cache.requests import default_request_store, request_key
 from assembler.cli import main
+from assembler.compiler.service import wait_for_writes
 from tests.conftest import use_private_cache
 
 ARM = """\
@@ -181,8 +181,8 @@ def test_a_spec_registered_as_text_is_never_recorded(arms: Path) -> None:
 def test_requests_in_environments_with_another_package_location_do_not_share_records(tmp_path: Path) -> None:
     edit(tmp_path / "fake.yaml", "name: FakeBot\nmjcf: package://fakebot/robot.xml\n", 3600)
     script = (
-        "import sys, assembler, assembler.build.service; m = assembler.load_model(sys.argv[1]); "
-        "assembler.build.service.wait_for_writes(); "
+        "import sys, assembler, assembler.compiler.service; m = assembler.load_model(sys.argv[1]); "
+        "assembler.compiler.service.wait_for_writes(); "
         "print(m.geom('robot0_base_col').size[0], 'assembler.registry.catalog' in sys.modules)"
     )
     seen = []
@@ -241,9 +241,10 @@ def test_a_repeated_build_prints_the_same_warnings(capsys: pytest.CaptureFixture
 
 @pytest.mark.parametrize("flag", [["--allow-path", "."], ["--specs", "."], ["--no-base"], ["--idn", "2"]])
 def test_build_flags_that_decide_the_answer_are_in_the_request(flag: list[str]) -> None:
+    from assembler.answers.build_request import build_request
     from assembler.cli.arguments import parse
-    from assembler.cli.quick_build import build_request
+    from assembler.cli.cached_build import build_flags
 
-    plain = build_request(parse(["build", "Sparrow7"]))
-    other = build_request(parse(["build", "Sparrow7", *flag]))
+    plain = build_request(build_flags(parse(["build", "Sparrow7"])))
+    other = build_request(build_flags(parse(["build", "Sparrow7", *flag])))
     assert plain is not None and other is not None and request_key(plain) != request_key(other)

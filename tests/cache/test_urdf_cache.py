@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.build import service
-from assembler.build.service import wait_for_writes
+from assembler.compiler import service
+from assembler.compiler.service import wait_for_writes
 from assembler.urdf.meshes import converted_dir, converter_available, importable
 from tests.conftest import use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package, write_stl

@@ -13,9 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from assembler.build.override_effects import superseded
 from assembler.cli import main
 from assembler.cli.arguments import parse
+from assembler.patch.override_effects import superseded
 from assembler.spec.documents import parse_overrides
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"

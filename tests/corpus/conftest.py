@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
+from assembler.importers import write_new_spec
+from assembler.importers.packages import environment
 from assembler.registry.catalog import register_specs
-from assembler.tools.new import write_new_spec
-from assembler.tools.new.packages import environment
 from tests.corpus.cases import Case
 
 

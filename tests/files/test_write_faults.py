@@ -217,7 +217,7 @@ def test_cache_clear_says_what_it_could_not_remove(
     monkeypatch.setenv("ASSEMBLER_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     assert main(["build", "Sparrow7", "-o", str(tmp_path / "a.xml")]) == 0
-    assembler.build.service.wait_for_writes()
+    assembler.compiler.service.wait_for_writes()
     real_unlink = Path.unlink
 
     def read_only(path: Path, missing_ok: bool = False) -> None:

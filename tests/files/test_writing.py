@@ -17,8 +17,8 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from assembler.build.service import wait_for_writes
 from assembler.cli import main
+from assembler.compiler.service import wait_for_writes
 from assembler.urdf.meshes import importable
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package

@@ -35,7 +35,7 @@ import json
 import assembler
 from assembler.models import REGISTRIES
 made = lambda: {family: sorted(dict.keys(table)) for family, table in REGISTRIES.items()}
-from assembler.cache.settings import cache_dir
+from assembler.files.cache_location import cache_dir
 panda = assembler.assemble("Panda")  # made now, and its request recorded for the next process
 after_panda = made()
 records = len(list((cache_dir() / "requests").iterdir()))

@@ -15,14 +15,14 @@ import mujoco
 import pytest
 
 import assembler
-from assembler.build.service import wait_for_writes
 from assembler.cli import main
+from assembler.compiler.service import wait_for_writes
 from assembler.mjcf.xml_text import XmlText
 from assembler.worlds.variants import Grid, VariantPlan, write_variants
 from assembler.worlds.variants.run import counts as variant_counts
-from tests.build.test_patchable import CASES, Write, _register_declared
-from tests.build.test_patched_api import _differences, _no_compile
 from tests.conftest import use_private_cache
+from tests.patch.test_patchable import CASES, Write, _register_declared
+from tests.patch.test_patched_api import _differences, _no_compile
 
 
 def variants(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:

@@ -15,9 +15,9 @@ from typing import Any, Protocol
 
 from assembler.errors import Location, Problem, SpecError, did_you_mean, summarize_names
 from assembler.files.paths import display_path, is_file, resolve_model_path
-from assembler.registry.arguments import SPEC_SUFFIXES
 from assembler.spec.documents.located import LocatedDocument
 from assembler.spec.fieldpath import TOP, FieldPath
+from assembler.spec.part_arguments import SPEC_SUFFIXES
 
 NOT_INHERITED: tuple[str, ...] = ("name", "extends")
 """Fields a child never takes from its parent."""

@@ -6,7 +6,7 @@ from typing import Literal
 
 from pydantic import Field
 
-from assembler.registry.arguments import DEFAULT
+from assembler.spec.part_arguments import DEFAULT
 from assembler.spec.schema.common import StrictModel, Vec3
 from assembler.spec.schema.parts import Name
 from assembler.spec.schema.robot import Arm

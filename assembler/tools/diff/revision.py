@@ -13,7 +13,6 @@ from pathlib import Path
 
 from assembler.errors import Problem, SpecError
 from assembler.files.paths import display_path, resolve_model_path
-from assembler.registry.arguments import SPEC_SUFFIXES
 from assembler.registry.catalog import PARENTS
 from assembler.spec.documents import (
     LoadedSpec,
@@ -23,6 +22,7 @@ from assembler.spec.documents import (
     resolve_path_fields,
 )
 from assembler.spec.fieldpath import TOP
+from assembler.spec.part_arguments import SPEC_SUFFIXES
 from assembler.spec.schema import PartSpec
 from assembler.spec.spec_files import load_documents
 

@@ -16,10 +16,10 @@ import mujoco
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
 from assembler.files.paths import display_path, is_file
 from assembler.models import PartModel, RobotModel
-from assembler.registry.arguments import ArgumentKind, argument_kind
 from assembler.registry.catalog import PARENTS, class_from_spec
 from assembler.registry.instances import equip
 from assembler.registry.lookup import find_registered, registered_names
+from assembler.spec.part_arguments import ArgumentKind, argument_kind
 from assembler.spec.schema import PartSpec
 from assembler.spec.spec_files import load_paths
 from assembler.tools.diff.revision import load_at_revision, split_revision

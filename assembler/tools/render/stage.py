@@ -17,7 +17,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.build.compile import compile_home
+from assembler.compiler.compile import compile_home
 from assembler.mjcf.geom_group_numbers import VISUAL_GROUPS
 from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import RobotModel

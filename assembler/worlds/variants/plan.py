@@ -15,10 +15,10 @@ import numpy as np
 import yaml
 
 from assembler.errors import AssemblerError
-from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import check_override_paths, with_overrides
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import Override, parse_overrides, parse_path
+from assembler.spec.part_arguments import DEFAULT
 
 
 def _flag_error(flag: str, text: str, expected: str) -> AssemblerError:

@@ -2,7 +2,7 @@
 
 Every variant is a model MuJoCo accepts before its file is written (atomically): either compiled,
 or (most sweeps) written as an edit of the robot's XML, compiled once per process
-(:mod:`~assembler.worlds.variants.patched` says how that keeps the guarantee); ``manifest.jsonl`` lists the
+(:mod:`~assembler.patch.variant_files` says how that keeps the guarantee); ``manifest.jsonl`` lists the
 written ones (index, file, sha256, overrides). The folder's previous manifest is removed before
 anything is written and the new one is written once, at the end or when the run is interrupted,
 listing only files this run wrote whole: at no moment does a manifest name a file that is not
@@ -29,11 +29,11 @@ from typing import Any
 
 from assembler.errors import AssemblerError, Problem
 from assembler.files.writing import cannot_write, make_folder, write_atomically
+from assembler.patch.variant_files import TEXT_SECTIONS, PatchedXml
 from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import parse_overrides
-from assembler.worlds.variants.patched import TEXT_SECTIONS, PatchedXml
 from assembler.worlds.variants.plan import VariantPlan
 
 MANIFEST = "manifest.jsonl"

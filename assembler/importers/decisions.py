@@ -1,5 +1,5 @@
 """What ``assembler new`` writes for a robot arm or a hand: each field guessed from the compiled model
-(:mod:`~assembler.tools.new.tree`, :mod:`~assembler.tools.new.physics`) with the reason beside it,
+(:mod:`~assembler.importers.tree`, :mod:`~assembler.importers.physics`) with the reason beside it,
 and what the file cannot tell marked with the field to set."""
 
 from __future__ import annotations
@@ -9,12 +9,12 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from assembler.importers.entries import Entry
+from assembler.importers.physics import home_pose, posed_data, scalar_joints, torque_limit
+from assembler.importers.reading import ModelFile
+from assembler.importers.tree import Tree
 from assembler.robosuite.conventions import has_force_range, is_bridge_servo
 from assembler.tools.lint.gripper_pose import ROOT_OFFSET_LIMIT
-from assembler.tools.new.entries import Entry
-from assembler.tools.new.physics import home_pose, posed_data, scalar_joints, torque_limit
-from assembler.tools.new.reading import ModelFile
-from assembler.tools.new.tree import Tree
 
 DEFAULT_GRIPPER = "PincerGripper"
 """The shipped two-finger gripper an arm without a jaw of its own gets, so robosuite's tasks can grasp."""

@@ -22,10 +22,10 @@ from assembler.models import RobotModel
 from assembler.models.joint_rules import JointTable
 from assembler.models.physical import PhysicalTable, element_names, resolve_physical
 from assembler.models.preparation import init_qpos_problems, joint_table
-from assembler.registry.arguments import DEFAULT
 from assembler.registry.catalog import with_overrides
 from assembler.registry.instances import assemble
 from assembler.spec.documents import Override, blame
+from assembler.spec.part_arguments import DEFAULT
 from assembler.spec.schema import RobotSpec
 
 LIGHT_SECTIONS = frozenset({"joint_defaults", "joints", "bodies", "geoms", "init_qpos"})
@@ -34,7 +34,7 @@ LIGHT_SECTIONS = frozenset({"joint_defaults", "joints", "bodies", "geoms", "init
 
 @dataclass(frozen=True)
 class Resolved:
-    """A robot's spec and its tables, unprefixed, as ``assembler.build.patchable.model_patch`` reads them."""
+    """A robot's spec and its tables, unprefixed, as ``assembler.patch.patchable.model_patch`` reads them."""
 
     spec: RobotSpec
     prefix: str

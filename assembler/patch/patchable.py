@@ -17,9 +17,9 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from assembler.build.patch_inputs import Resolved
 from assembler.errors import AssemblerError
 from assembler.mjcf.sizes import scaled_size
+from assembler.patch.resolved import Resolved
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
     "joint_defaults.frictionloss, joints[i].frictionloss": ("dof_frictionloss",),
@@ -64,7 +64,7 @@ DERIVED: tuple[str, ...] = (
     "light_pos0",
     "light_poscom0",
 )
-"""Fields ``mj_setConst`` recomputes from the patched ones. Recomputed by :mod:`assembler.build.derived`
+"""Fields ``mj_setConst`` recomputes from the patched ones. Recomputed by :mod:`assembler.patch.derived`
 as MuJoCo's compiler does: a dampratio's ``actuator_biasprm[2]``, the home keyframe's controls,
 ``stat.meaninertia`` and ``stat.meanmass``. Not recomputed: ``stat.extent``, ``stat.center`` and
 ``stat.meansize``, which only drawing reads (a size_scale leaves them at the compiled robot's values)."""
@@ -127,7 +127,7 @@ class ModelPatch:
     """Actuator -> damping ratio: its ``biasprm[2]`` is recomputed after ``mj_setConst``."""
 
     dampratio_rule: str | None = None
-    """How this MuJoCo's compiler resolves a dampratio (``assembler.build.derived.dampratio_rule``);
+    """How this MuJoCo's compiler resolves a dampratio (``assembler.patch.derived.dampratio_rule``);
     None: read off the model the patch is applied to, before it is patched."""
 
     def set(self, name: str, row: int, value: Any) -> None:

@@ -5,7 +5,7 @@ targets and a mocap body welded to the hand around the robot's ``<include>``; a 
 hold one robot under one root body. :func:`scene_cut` finds the robot (the child of ``<worldbody>``
 whose subtree holds the most joints) and the ``mjcf_fixes`` deletions that leave it alone, as the
 spec reads the file (the file itself is never changed): every other child of ``<worldbody>``, then
-every element elsewhere that names something deleted (:mod:`assembler.tools.new.references`).
+every element elsewhere that names something deleted (:mod:`assembler.importers.references`).
 
 The file is read as MuJoCo reads it: included files are expanded where they stand, and the
 fixes are written to select in the main file and its included files alike, as ``mjcf_fixes`` applies
@@ -21,10 +21,10 @@ from pathlib import Path
 
 import mujoco
 
+from assembler.importers.entries import Entry
+from assembler.importers.references import Cut, dependent_cuts, label, selector
+from assembler.importers.xml_files import XmlFiles
 from assembler.spec.schema.fixes import MjcfFix
-from assembler.tools.new.entries import Entry
-from assembler.tools.new.references import Cut, dependent_cuts, label, selector
-from assembler.tools.new.xml_files import XmlFiles
 
 WORLD_CHILD_WHY: dict[str, str] = {
     "body": "a body of the task scene beside the robot (a table, a target, a floor marker)",

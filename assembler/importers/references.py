@@ -11,7 +11,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from assembler.tools.new.xml_files import XmlFiles
+from assembler.importers.xml_files import XmlFiles
 
 NAMED_KINDS: dict[str, str] = {
     "body": "body",

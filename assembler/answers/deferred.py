@@ -5,7 +5,7 @@ used for something the cache cannot answer.
 Why: ``import assembler; assembler.assemble("Panda").get_model()`` is the README's first line, and
 importing the schema and model layers and validating the specs costs several times MuJoCo's load
 of the cached model (a Panda: 0.55 s of CPU against 0.09 s). So when the same request was answered
-before in this environment (a request record, :mod:`assembler.build.repeat`: the same arguments,
+before in this environment (a request record, :mod:`assembler.answers.records`: the same arguments,
 every spec file it was made from unchanged), the robot starts as a :class:`DeferredRobot` that
 holds only the request: ``get_model()``, ``get_xml()`` and ``save()`` are answered from the record's
 cache entry. Anything else (any other attribute or method, ``isinstance``, ``repr``) first turns
@@ -32,14 +32,14 @@ from typing import Any
 
 import mujoco
 
-from assembler.build.load_model import assembly_request
-from assembler.build.lookup import entry_key
-from assembler.build.repeat import KeyedRequest, record_of, recorded_model, recorded_xml
+from assembler.answers.load_model import assembly_request
+from assembler.answers.records import KeyedRequest, record_of, recorded_model, recorded_xml
 from assembler.cache.requests import RequestRecord
-from assembler.cache.settings import volatile_folders
+from assembler.compiler.stored import entry_key
+from assembler.files.cache_location import volatile_folders
 from assembler.files.writing import write_atomically
 from assembler.mjcf.keyframe import Keyframe
-from assembler.registry.arguments import DEFAULT, ArgumentKind, argument_kind
+from assembler.spec.part_arguments import DEFAULT, ArgumentKind, argument_kind
 
 ASSEMBLE = "load_model"
 """The request kind of ``assemble``: ``load_model``'s, whose answer is ``assemble(...).get_model()``."""
@@ -92,7 +92,7 @@ def _robot_class(pending: _Pending) -> type:
 
 def _full_path() -> Any:
     # The schema, model classes and registry: imported only when a robot is really made, which is
-    # what keeps a cached answer free of them (tests/registry/test_deferred.py checks sys.modules).
+    # what keeps a cached answer free of them (tests/answers/test_deferred.py checks sys.modules).
     return importlib.import_module("assembler.registry.instances")
 
 
@@ -207,7 +207,7 @@ def _answered_or_made(arguments: RobotArguments) -> Any:
     # Recorded now, under the key its inputs hash to (get_model stores the entry there): nothing
     # here reads MJCF or compiles. The record's own rules decide whether it can be kept.
     robot.entry_key = entry_key(robot.build_inputs())
-    importlib.import_module("assembler.build.request").record_answer(request, robot, [], None)
+    importlib.import_module("assembler.answers.request").record_answer(request, robot, [], None)
     return robot
 
 

@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.build import service
-from assembler.build.service import wait_for_writes
-from tests.build.test_patchable import CASES, Write, _model_arrays, _register_declared
+from assembler.compiler import service
+from assembler.compiler.service import wait_for_writes
 from tests.conftest import use_private_cache
 from tests.models.test_physical import CUBE_OBJ, MESH_MJCF
+from tests.patch.test_patchable import CASES, Write, _model_arrays, _register_declared
 
 
 @pytest.fixture(autouse=True)
@@ -44,7 +44,7 @@ def _no_compile(monkeypatch: pytest.MonkeyPatch) -> None:
         raise AssertionError("compiled or decoded a mesh")
 
     for name in ("compile_from_store", "compile_spec", "compile_with_home"):
-        monkeypatch.setattr(f"assembler.build.compile.{name}", refuse)
+        monkeypatch.setattr(f"assembler.compiler.compile.{name}", refuse)
     monkeypatch.setattr("assembler.cache.mesh_data.decode", refuse)
     monkeypatch.setattr("assembler.cache.mesh_fill.decode", refuse)
 
@@ -138,7 +138,7 @@ def test_the_xml_of_a_variant_with_a_body_scale_is_compiled(caplog: pytest.LogCa
     wait_for_writes()
     patched = service.counts.patched
     overrides = {"bodies": [{"match": "link3", "mass_scale": 1.4}]}
-    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+    with caplog.at_level(logging.DEBUG, logger="assembler.patch.robot_variant"):
         xml = assembler.assemble("Sparrow7", overrides=overrides).get_xml()
     assert service.counts.patched == patched
     compiled = assembler.assemble("Sparrow7", overrides=overrides).get_model(cache=False, store=False)
@@ -170,7 +170,7 @@ def test_the_xml_of_a_variant_is_compiled_when_only_the_plain_model_is_cached(
     assembler.assemble("Sparrow7").get_model()  # the model, not its XML
     wait_for_writes()
     patched = service.counts.patched
-    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+    with caplog.at_level(logging.DEBUG, logger="assembler.patch.robot_variant"):
         xml = assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": 0.25}).get_xml()
     assert service.counts.patched == patched
     assert mujoco.MjModel.from_xml_string(xml).joint("robot0_joint1").damping[0] == pytest.approx(0.25)
@@ -202,7 +202,7 @@ def test_a_structural_override_is_compiled_and_the_reason_is_logged(
     assembler.assemble("Sparrow7").get_model()
     wait_for_writes()
     patched = service.counts.patched
-    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+    with caplog.at_level(logging.DEBUG, logger="assembler.patch.robot_variant"):
         model = assembler.assemble("Sparrow7", overrides={"remove_free_joint": True}).get_model()
     assert service.counts.patched == patched
     assert model.nbody > 0
@@ -213,7 +213,7 @@ def test_a_variant_of_a_robot_not_in_the_cache_is_compiled_and_says_why(
     caplog: pytest.LogCaptureFixture,
 ) -> None:
     patched = service.counts.patched
-    with caplog.at_level(logging.DEBUG, logger="assembler.build.patched"):
+    with caplog.at_level(logging.DEBUG, logger="assembler.patch.robot_variant"):
         model = assembler.assemble("Finch6", overrides={"joint_defaults.damping": 0.2}).get_model()
     assert service.counts.patched == patched
     assert model.joint("robot0_joint1").damping[0] == pytest.approx(0.2)

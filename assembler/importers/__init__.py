@@ -1,10 +1,10 @@
 """``assembler new``: a first spec for a vendor's MJCF or URDF, written so that it validates and builds
 as it stands, every guess commented and every open question named with the field to set.
 
-The file is read by the readers a spec uses (:mod:`~assembler.tools.new.reading`); the kinematic
-tree gives the arm, its joints and end-effector (:mod:`~assembler.tools.new.tree`); the compiled
-model gives a home pose and torque limits (:mod:`~assembler.tools.new.physics`);
-:mod:`~assembler.tools.new.decisions` turns them into fields, :mod:`~assembler.tools.new.entries`
+The file is read by the readers a spec uses (:mod:`~assembler.importers.reading`); the kinematic
+tree gives the arm, its joints and end-effector (:mod:`~assembler.importers.tree`); the compiled
+model gives a home pose and torque limits (:mod:`~assembler.importers.physics`);
+:mod:`~assembler.importers.decisions` turns them into fields, :mod:`~assembler.importers.entries`
 into YAML. Nothing in the vendor's files is changed.
 """
 
@@ -19,16 +19,16 @@ from assembler.errors import AssemblerError
 from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
+from assembler.importers.decisions import gripper_entries, robot_entries
+from assembler.importers.entries import Entry, spec_text
+from assembler.importers.naming import camel_case, free_name, name_source
+from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside
+from assembler.importers.reading import ModelFile, file_format, read_model_file, spec_reference
+from assembler.importers.robosuite_names import robosuite_names
+from assembler.importers.scene import scene_cut, scene_entry
+from assembler.importers.tree import read_tree
 from assembler.registry.catalog import load_shipped_specs
 from assembler.registry.lookup import registered_names
-from assembler.tools.new.decisions import gripper_entries, robot_entries
-from assembler.tools.new.entries import Entry, spec_text
-from assembler.tools.new.naming import camel_case, free_name, name_source
-from assembler.tools.new.packages import BesidePackage, declaration, found_packages, packages_beside
-from assembler.tools.new.reading import ModelFile, file_format, read_model_file, spec_reference
-from assembler.tools.new.robosuite_names import robosuite_names
-from assembler.tools.new.scene import scene_cut, scene_entry
-from assembler.tools.new.tree import read_tree
 
 Kind = Literal["robot", "gripper"]
 

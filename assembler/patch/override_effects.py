@@ -4,7 +4,7 @@ An override that changes nothing is almost always a mistake a reviewer would wan
 ``joint_defaults.damping`` on a robot whose ``joints:`` set damping on every joint, say. Each
 override is tested by building without it (from the cache when the plain robot is there) and
 comparing the two compiled models field by field. Not byte for byte: one of the two may be a variant
-patched onto the cached robot (:mod:`assembler.build.patched`) and the other compiled, and those agree
+patched onto the cached robot (:mod:`assembler.patch.robot_variant`) and the other compiled, and those agree
 to 1e-10, not to the last bit.
 """
 

@@ -1,6 +1,6 @@
 """A patch written as edits of the robot's emitted MJCF: a variant's XML without building or emitting it.
 
-A variant that a patch describes (:func:`~assembler.build.patchable.model_patch`) differs from its
+A variant that a patch describes (:func:`~assembler.patch.patchable.model_patch`) differs from its
 robot in attribute values of named elements of the robot's emitted MJCF: a joint's
 ``damping``/``frictionloss``/``armature``/``stiffness``, an actuator's ``gainprm``/``biasprm``/
 ``gear``/``ctrlrange``/``forcerange``, a geom's ``friction`` and the ``home`` key's ``qpos`` and
@@ -18,9 +18,9 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from assembler.build.patchable import ModelPatch
 from assembler.mjcf.keyframe import HOME_KEY, home_control
 from assembler.mjcf.xml_text import NotInText, XmlText, numbers
+from assembler.patch.patchable import ModelPatch
 
 JOINT_ATTRIBUTES = {
     "dof_damping": "damping",

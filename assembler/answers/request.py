@@ -1,6 +1,6 @@
 """The slow path of a request: resolve it with the registry (reading and validating specs), answer
 it through the compile service, and record it so the next process answers it from the cache
-(:mod:`assembler.build.repeat`).
+(:mod:`assembler.answers.records`).
 
 A request is recorded only when its answer can be found again from the request alone: every part
 is made from spec files (their files and times as read are in the record), and every spec the
@@ -17,13 +17,13 @@ from pathlib import Path
 
 import mujoco
 
-from assembler.build.repeat import KeyedRequest, Origin, record
+from assembler.answers.records import KeyedRequest, Origin, record
 from assembler.files.paths import shipped_specs_dir
 from assembler.models import REGISTRIES, PartModel, RobotModel
-from assembler.registry.arguments import is_spec_file
 from assembler.registry.catalog import add_spec_folders, register_specs
 from assembler.registry.instances import assemble
 from assembler.spec.documents import Overrides
+from assembler.spec.part_arguments import is_spec_file
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:
@@ -95,7 +95,7 @@ def load_and_record(
     specs: Sequence[str | Path],
     cache: bool,
 ) -> mujoco.MjModel:
-    """:func:`assembler.build.load_model.load_model`'s slow path: assemble, compile (or load), record."""
+    """:func:`assembler.answers.load_model.load_model`'s slow path: assemble, compile (or load), record."""
     assembled, robot_file = resolve(robot, idn, base, grippers, overrides, specs)
     model = assembled.get_model(cache=cache)
     if cache:

@@ -15,10 +15,10 @@ from typing import Any
 
 import mujoco
 
-from assembler.build.lookup import default_store, load_entry
 from assembler.cache.dependencies import Recorder
 from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
-from assembler.cache.settings import cache_disabled
+from assembler.compiler.stored import default_store, load_entry
+from assembler.files.cache_location import cache_disabled
 
 Request = Mapping[str, Any]
 """A request as plain JSON data: what was asked for, exactly as given."""

@@ -1,8 +1,8 @@
 """A cache lookup of the compile service without the compiler: the model stored under a key, the
 store the environment points at, an assembly's key, and the counts of hits and misses.
 
-Split from :mod:`assembler.build.service` so that a request answered from its record
-(:mod:`assembler.build.repeat`, ``assemble(name).get_model()`` in a new process) imports neither
+Split from :mod:`assembler.compiler.service` so that a request answered from its record
+(:mod:`assembler.answers.records`, ``assemble(name).get_model()`` in a new process) imports neither
 the compile path (the mesh swap and store, MJCF emission, bundles) nor anything it reads: every
 module imported is time the cached answer pays against MuJoCo's own load of the ``.mjb``.
 """
@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.cache.inputs import BuildInputs
+from assembler.cache.build_inputs import BuildInputs
 from assembler.cache.key import cache_key
 from assembler.cache.memory import RecentModels
-from assembler.cache.settings import cache_dir, cache_disabled, max_bytes
 from assembler.cache.store import ModelStore
+from assembler.files.cache_location import cache_dir, cache_disabled, max_bytes
 
 
 @dataclass
@@ -32,7 +32,7 @@ class LookupCounts:
 
     patched: int = 0
     """Of the misses, those answered by patching the cached model of the robot without its overrides
-    (:mod:`assembler.build.patched`) rather than compiled."""
+    (:mod:`assembler.patch.robot_variant`) rather than compiled."""
 
     bypassed: int = 0
     """Compiled without looking: cache disabled, or a part the key cannot describe."""

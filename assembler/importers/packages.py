@@ -31,7 +31,7 @@ from assembler.files.limits import MAX_MJCF_BYTES
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER, find_repository
 from assembler.files.variables import restored_after
-from assembler.tools.new.reading import python_package_reference
+from assembler.importers.reading import python_package_reference
 from assembler.urdf.packages import package_folders, split_package_uri
 
 PACKAGE_URI = re.compile(r"""package://[^"'\s<>]+""")

@@ -1,6 +1,6 @@
 """What the kinematic tree of a compiled model says about a robot: which joints are fingers, which
 move the whole robot, the arm's chain, the end-effector body and a grip frame. Every answer is a
-guess from names and structure; :mod:`assembler.tools.new.decisions` says why beside it.
+guess from names and structure; :mod:`assembler.importers.decisions` says why beside it.
 """
 
 from __future__ import annotations

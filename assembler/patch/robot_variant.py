@@ -4,18 +4,18 @@
 the whole assembly again, meshes and all, when only a few numbers of the compiled model differ
 from the plain Panda's. When the compiled-model cache misses such a robot, and holds the robot
 without its overrides (same idn, base, grippers and placement), this module loads that model,
-writes what the overrides change (:func:`~assembler.build.patchable.model_patch`) and recomputes
-what MuJoCo derives from it (:func:`~assembler.build.derived.apply_patch`): no MJCF is built, no
+writes what the overrides change (:func:`~assembler.patch.patchable.model_patch`) and recomputes
+what MuJoCo derives from it (:func:`~assembler.patch.derived.apply_patch`): no MJCF is built, no
 mesh is read or decoded, nothing is compiled. The result equals a full compile within 1e-10 in
-every model field (tests/build/test_patched_api.py).
+every model field (tests/patch/test_patched_api.py).
 
 ``get_xml()`` and ``save()`` of such a robot are answered the same way when the plain robot's entry
 holds its emitted XML too: that text with the patch's values written into the attributes that hold
-them (:mod:`assembler.build.patched_text`), which MuJoCo loads to the full compile's model.
+them (:mod:`assembler.patch.xml_edits`), which MuJoCo loads to the full compile's model.
 
 Anything a patch cannot do (a structural override, ``set_joint_attribute`` edits, the plain robot
 not in the cache) is compiled as before; the reason is logged at DEBUG level on the
-``assembler.build.patched`` logger, never warned: a compile is the normal answer, not a problem.
+``assembler.patch.robot_variant`` logger, never warned: a compile is the normal answer, not a problem.
 
 A patched model (or XML) is not stored as a cache entry of its own, whatever ``store`` says: patching it
 again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU against ~0.1 s for
@@ -32,18 +32,18 @@ from dataclasses import replace
 
 import mujoco
 
-from assembler.build.derived import apply_patch
-from assembler.build.lookup import default_store, entry_key, load_entry
-from assembler.build.patch_inputs import Resolved, resolve_spec
-from assembler.build.patchable import ModelPatch, NotPatchable, model_patch
-from assembler.build.patched_text import patched_text
-from assembler.build.service import CompiledModel
+from assembler.compiler.service import CompiledModel
+from assembler.compiler.stored import default_store, entry_key, load_entry
 from assembler.mjcf.keyframe import Keyframe
 from assembler.mjcf.xml_text import XmlText
 from assembler.models import RobotModel
+from assembler.patch.derived import apply_patch
+from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.resolved import Resolved, resolve_spec
+from assembler.patch.xml_edits import patched_text
 from assembler.registry.catalog import applied_overrides
 
-LOG = logging.getLogger("assembler.build.patched")
+LOG = logging.getLogger("assembler.patch.robot_variant")
 
 
 def unpatched_class(cls: type[RobotModel]) -> type[RobotModel]:
@@ -112,7 +112,7 @@ def patched_variant(robot: RobotModel) -> CompiledModel | None:
 def patched_variant_xml(robot: RobotModel) -> tuple[CompiledModel, str] | None:
     """``robot``'s model and MJCF, both from its plain robot's cache entry: the model patched, the
     text the plain robot's emitted XML with the patch's values written in
-    (:mod:`assembler.build.patched_text`); None, with the reason logged, when it must be compiled
+    (:mod:`assembler.patch.xml_edits`); None, with the reason logged, when it must be compiled
     (the entry holds no XML, or the patch writes what no attribute holds alone: ``bodies:`` scales)."""
     found = _plain_patch(robot, with_xml=True)
     if found is None:

@@ -1,7 +1,7 @@
 """``assembler.load_model``: a robot's compiled model in as little time as MuJoCo's own load of it.
 
 A request made before in this environment is answered from the compiled-model cache through its
-request record (:mod:`assembler.build.repeat`) without importing the schema or reading any spec;
+request record (:mod:`assembler.answers.records`) without importing the schema or reading any spec;
 anything else takes the full path (``assemble(...).get_model()``) and records the request for
 next time. This module imports only the cache layer and MuJoCo: that is what keeps a warm load
 close to ``mujoco.MjModel.from_binary_path`` of the cached file.
@@ -16,8 +16,8 @@ from typing import Any
 
 import mujoco
 
-from assembler.build.repeat import KeyedRequest, answered_model, keyed
-from assembler.registry.arguments import DEFAULT, spec_file_path
+from assembler.answers.records import KeyedRequest, answered_model, keyed
+from assembler.spec.part_arguments import DEFAULT, spec_file_path
 
 
 def _plain(overrides: Any) -> Any:
@@ -79,5 +79,5 @@ def load_model(
         if model is not None:
             return model
     # The slow path reads specs: imported only now, so a repeated request never pays for it.
-    slow = importlib.import_module("assembler.build.request")
+    slow = importlib.import_module("assembler.answers.request")
     return slow.load_and_record(request, robot, idn, base, grippers, overrides, specs, cache)

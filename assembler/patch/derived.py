@@ -14,10 +14,10 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.build.patch_inputs import Resolved
-from assembler.build.patchable import ModelPatch, model_patch
 from assembler.mjcf.keyframe import home_control
 from assembler.models import RobotModel
+from assembler.patch.patchable import ModelPatch, model_patch
+from assembler.patch.resolved import Resolved
 
 
 def _reflected_inertias(

@@ -9,7 +9,7 @@ written in the background with every file the compile read. The keyframe travels
 exactly the keyframe of the model that was handed out. An entry also keeps the assembly's emitted
 XML once it was asked for (:func:`compile_xml`), so a repeated ``get_xml`` neither builds nor
 compiles. The lookup itself (the store, a stored model, an assembly's key, the counts) is
-:mod:`assembler.build.lookup`, which a cached answer imports without this module.
+:mod:`assembler.compiler.stored`, which a cached answer imports without this module.
 """
 
 from __future__ import annotations
@@ -19,12 +19,6 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.build.compile import compile_and_emit, compile_home
-from assembler.build.lookup import counts as counts  # the lookup's names, still asked for here
-from assembler.build.lookup import default_store as default_store
-from assembler.build.lookup import entry_key as entry_key
-from assembler.build.lookup import load_entry
-from assembler.build.lookup import recent as _recent
 from assembler.cache.dependencies import Recorder, asset_files, verify
 from assembler.cache.folder import FolderInfo
 from assembler.cache.folder import clear as clear_folder
@@ -32,6 +26,12 @@ from assembler.cache.mesh_swap import wait_for_fillers
 from assembler.cache.meshes import default_mesh_store
 from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
+from assembler.compiler.compile import compile_and_emit, compile_home
+from assembler.compiler.stored import counts as counts  # the lookup's names, still asked for here
+from assembler.compiler.stored import default_store as default_store
+from assembler.compiler.stored import entry_key as entry_key
+from assembler.compiler.stored import load_entry
+from assembler.compiler.stored import recent as _recent
 from assembler.files.inputs import note_inputs
 from assembler.mjcf.keyframe import Keyframe
 
@@ -110,7 +110,7 @@ def compile_model(
     """The model of the cache entry ``key`` (see :func:`entry_key`): from the cache, or ``build()``
     compiled and (with ``store``) kept for next time; with no key, compiled every time. On a miss,
     ``patched()`` is asked first: a model it returns (made without a compile) is the answer, and
-    is not stored (see :mod:`assembler.build.patched` for why)."""
+    is not stored (see :mod:`assembler.patch.robot_variant` for why)."""
     if key is None:
         counts.bypassed += 1
         return compile_assembly(_built(build), meshes=cache)
@@ -145,7 +145,7 @@ def compile_xml(
 
     From the cache entry when it holds the XML (no build, no compile, the model not even read:
     None is returned for it); else built once, compiled once and emitted from that same spec
-    (:func:`~assembler.build.compile.compile_and_emit`), and (with ``store``) kept: the XML is
+    (:func:`~assembler.compiler.compile.compile_and_emit`), and (with ``store``) kept: the XML is
     added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
     False reads meshes from their files rather than the mesh store: a process compiling the same
     meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from

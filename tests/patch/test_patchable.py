@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.build.derived import apply_patch, patched_model
-from assembler.build.patch_inputs import Resolved, resolve_variant
-from assembler.build.patchable import PATCHABLE, NotPatchable, model_patch
 from assembler.errors import SpecError
+from assembler.patch.derived import apply_patch, patched_model
+from assembler.patch.patchable import PATCHABLE, NotPatchable, model_patch
+from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
 from tests.models.test_physical import CUBE_OBJ, MESH_MJCF

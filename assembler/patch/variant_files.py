@@ -2,8 +2,8 @@
 variant's XML is that text with the values its patch changes put in.
 
 A variant differs from the plan's robot (its ``--set`` overrides applied, nothing varied) in what
-:func:`~assembler.build.patchable.model_patch` finds between the two: the resolved joint,
-actuator, friction and home-pose tables. :mod:`assembler.build.patched_text` writes those as edits
+:func:`~assembler.patch.patchable.model_patch` finds between the two: the resolved joint,
+actuator, friction and home-pose tables. :mod:`assembler.patch.xml_edits` writes those as edits
 of the robot's emitted XML; anything it cannot write (``bodies:`` scales) is built and compiled the
 full way (:func:`PatchedXml.xml` returns None).
 
@@ -23,13 +23,13 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.build.compile import compile_and_emit
-from assembler.build.patch_inputs import Resolved, resolve_variant
-from assembler.build.patchable import NotPatchable, model_patch
-from assembler.build.patched_text import patched_text
-from assembler.build.service import default_store, entry_key
+from assembler.compiler.compile import compile_and_emit
+from assembler.compiler.service import default_store, entry_key
 from assembler.mjcf.xml_text import XmlText
 from assembler.models import RobotModel
+from assembler.patch.patchable import NotPatchable, model_patch
+from assembler.patch.resolved import Resolved, resolve_variant
+from assembler.patch.xml_edits import patched_text
 from assembler.registry.instances import assemble
 from assembler.spec.documents import Override
 

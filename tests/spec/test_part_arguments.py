@@ -11,7 +11,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.errors import AssemblerError
-from assembler.registry.arguments import ArgumentKind, argument_kind
+from assembler.spec.part_arguments import ArgumentKind, argument_kind
 from tests.conftest import TWO_LINK_MJCF, TWO_LINK_SPEC
 
 TOO_LONG = "x" * 300  # longer than any file name the file system allows (ENAMETOOLONG)
