@@ -4,13 +4,18 @@ and ``set_joint_attribute``, compiled by MuJoCo; and the pose robosuite resets t
 
 from __future__ import annotations
 
+import hashlib
+import os
+import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any
 
 import mujoco
 import numpy as np
 
+from tests.parity import case as case_module
 from tests.parity.case import DEFAULT, Case, joint_attribute_values
 
 
@@ -77,8 +82,70 @@ def _placed(case: Case) -> tuple[Any, dict[str, Any]]:
 
 
 def build_reference(case: Case) -> Reference:
-    """robosuite's compiled model of the case and the keyframe robosuite's reset implies."""
-    return build_edited_reference(case, None)
+    """robosuite's compiled model of the case and the keyframe robosuite's reset implies, from the
+    reference store when this robosuite, this MuJoCo and this module made it before (see
+    :func:`reference_folder`), else built and stored."""
+    folder = reference_folder()
+    if folder is None:
+        return build_edited_reference(case, None)
+    stored = folder / f"{_reference_key(case)}.npz"
+    if stored.is_file():
+        with np.load(stored) as saved:
+            model = _model_from_bytes(saved["model"].tobytes())
+            return Reference(model, saved["home_qpos"], saved["home_ctrl"])
+    reference = build_edited_reference(case, None)
+    folder.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=folder, suffix=".npz.tmp")
+    with os.fdopen(handle, "wb") as stream:
+        np.savez(
+            stream,
+            model=np.frombuffer(_model_bytes(reference.model), np.uint8),
+            home_qpos=reference.home_qpos,
+            home_ctrl=reference.home_ctrl,
+        )
+    os.replace(temporary, stored)  # whole or absent: parallel workers may store the same case
+    return reference
+
+
+REFERENCE_FOLDER_VARIABLE = "PARITY_REFERENCE_DIR"
+"""Where robosuite's compiled side of the parity cases is kept between runs; ``off`` builds every
+reference each time. Default: ``robot-assembler-parity`` in the user's cache folder. robosuite's side
+does not change unless robosuite, MuJoCo or this module does, and building it is most of a case's
+time, so CI keeps it (it is rebuilt on any miss)."""
+
+
+def reference_folder() -> Path | None:
+    """The folder of stored references, or None when storing is off."""
+    chosen = os.environ.get(REFERENCE_FOLDER_VARIABLE)
+    if chosen == "off":
+        return None
+    if chosen:
+        return Path(chosen)
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "robot-assembler-parity"
+
+
+def _reference_key(case: Case) -> str:
+    """The stored reference's name: robosuite's and MuJoCo's versions, the case, and this module's
+    own text (the way the reference is built)."""
+    import robosuite
+
+    made_by = Path(__file__).read_bytes() + Path(case_module.__file__).read_bytes()
+    text = repr((robosuite.__version__, mujoco.__version__, case, hashlib.sha256(made_by).hexdigest()))
+    return hashlib.sha256(text.encode()).hexdigest()[:32]
+
+
+def _model_bytes(model: mujoco.MjModel) -> bytes:
+    buffer = np.zeros(mujoco.mj_sizeModel(model), np.uint8)
+    mujoco.mj_saveModel(model, None, buffer)
+    return buffer.tobytes()
+
+
+def _model_from_bytes(data: bytes) -> mujoco.MjModel:
+    with tempfile.NamedTemporaryFile(suffix=".mjb") as stream:
+        stream.write(data)
+        stream.flush()
+        return mujoco.MjModel.from_binary_path(stream.name)
 
 
 def normalized(case: Case) -> Case:

@@ -306,3 +306,28 @@ def test_the_oracle_reports_a_change_of_each_field_family(mutation: Mutation) ->
     new = [line for line in differences(model, reference, renamed(case)) if line not in unchanged]
     assert any(line.startswith(mutation.line) for line in new), f"{mutation.line!r} not in {new}"
     assert families(new) <= {mutation.family} | mutation.also, new
+
+
+def test_a_stored_reference_is_robosuites_model_and_a_new_mujoco_or_case_is_a_miss(
+    tmp_path: Any, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """robosuite's side is kept between runs (CI keeps it); what comes back from the store must be the
+    model robosuite builds, and nothing else may be served under a case's name."""
+    from tests.parity import robosuite_side
+
+    monkeypatch.setenv(robosuite_side.REFERENCE_FOLDER_VARIABLE, str(tmp_path))
+    built = build_reference(PANDA)
+    stored_files = sorted(tmp_path.glob("*.npz"))
+    stored = build_reference(PANDA)
+    assert len(stored_files) == 1 and stored_files == sorted(tmp_path.glob("*.npz"))
+    assert robosuite_side._model_bytes(stored.model) == robosuite_side._model_bytes(built.model)
+    assert np.array_equal(stored.home_qpos, built.home_qpos) and np.array_equal(
+        stored.home_ctrl, built.home_ctrl
+    )
+    assert differences(build_ours(PANDA), stored, renamed(PANDA)) == differences(
+        build_ours(PANDA), built, renamed(PANDA)
+    )
+    build_reference(Case("Panda", idn=1))
+    monkeypatch.setattr(robosuite_side.mujoco, "__version__", "0.0.1")
+    build_reference(PANDA)
+    assert len(list(tmp_path.glob("*.npz"))) == 3

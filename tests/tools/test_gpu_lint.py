@@ -3,7 +3,7 @@
 Each rule has a small robot that breaks it: the engine's own ``put_model`` refuses it (or, for the
 constraint budget and mesh sizes, runs it badly), and the lint finds it; a clean robot passes both.
 The engines are optional: a test skips, saying how to install one, where it is absent (CI runs
-these in the engines' own environments: .ci/warp for MuJoCo Warp, .ci/mjx for MJX).
+these where the engines are installed: .ci/run adds the warp and mjx extras to its newest-MuJoCo environment).
 """
 
 from __future__ import annotations
@@ -126,7 +126,7 @@ def codes(findings: list[dict[str, Any]]) -> list[tuple[str, str, str]]:
 @pytest.fixture(scope="module")
 def warp() -> ModuleType:
     engine = pytest.importorskip(
-        "mujoco_warp", reason="MuJoCo Warp is not installed (pip install mujoco-warp; CI: .ci/warp)"
+        "mujoco_warp", reason="MuJoCo Warp is not installed (pip install mujoco-warp; CI: .ci/run)"
     )
     pytest.importorskip("warp").config.quiet = True  # its start-up banner would mix with lint's output
     return engine
@@ -135,7 +135,7 @@ def warp() -> ModuleType:
 @pytest.fixture(scope="module")
 def mjx() -> ModuleType:
     return pytest.importorskip(
-        "mujoco.mjx", reason="MJX is not installed (pip install -e '.[mjx]'; CI: .ci/mjx)"
+        "mujoco.mjx", reason="MJX is not installed (pip install -e '.[mjx]'; CI: .ci/run)"
     )
 
 
