@@ -8,6 +8,7 @@ import json
 from assembler.cli.common import bare_robot, override_flags, table
 from assembler.files.paths import display_path
 from assembler.models.actuator_table import ActuatorRecord
+from assembler.models.motor_joints import derivation_lines
 from assembler.models.physical import PhysicalTable
 from assembler.spec.schema import JOINT_RULE_ATTRIBUTES
 
@@ -15,6 +16,7 @@ from assembler.spec.schema import JOINT_RULE_ATTRIBUTES
 def run(args: argparse.Namespace) -> int:
     changes = override_flags(args)
     robot = bare_robot(args.robot, args.idn, changes)
+    derivations = derivation_lines(robot.naming_prefix, robot.joint_values, robot.actuator_table)
     if args.format == "json":
         joints = {
             robot.naming_prefix + joint: {
@@ -48,6 +50,7 @@ def run(args: argparse.Namespace) -> int:
             "actuators": actuators,
             "bodies": bodies,
             "geoms": geoms,
+            "motor_derivations": derivations,
         }
         print(json.dumps(summary, indent=2))
         return 0
@@ -77,6 +80,9 @@ def run(args: argparse.Namespace) -> int:
     if robot.physical.bodies or robot.physical.geoms:
         print()
         print(table(_physical_rows(robot.naming_prefix, robot.physical)))
+    if derivations:
+        print("\nfrom the motors (value = numbers, then the motor, its motors: entry and the formula):")
+        print("\n".join(f"  {line}" for line in derivations))
     return 0
 
 

@@ -17,6 +17,7 @@ import mujoco
 from assembler.errors import Problem
 from assembler.mjcf.actuators import MOVING, ValueOrigin, add_declared_actuator, followers
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
+from assembler.models.motor_rules import Derived
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import ActuatorDeclaration
 
@@ -39,13 +40,22 @@ class ActuatorRecord:
     entry: int | None = None
     """The index of the ``actuators:`` entry that made it; None for the file's own actuator."""
 
-    values: dict[str, tuple[str, ValueOrigin]] = field(default_factory=dict)
+    values: Mapping[str, tuple[str, ValueOrigin | str]] = field(default_factory=dict)
     """Value name -> (value as text, its source), e.g. ``ctrlrange: ("[-2.9, 2.9]", "joint range")``."""
+
+    section: str = "actuators"
+    """The spec section whose entry made it: ``actuators`` or ``motors``."""
+
+    derivations: tuple[tuple[str, Derived], ...] = ()
+    """For a motor's actuator: each value derived from the motor spec, by name (``inspect`` shows them)."""
+
+    note: str = ""
+    """What the actuator replaced, if anything (a motor's actuator replaces the joint's own)."""
 
     @property
     def source(self) -> str:
-        """``spec actuators[i]``, or ``mjcf`` for the file's own actuator."""
-        return FROM_FILE if self.entry is None else f"spec actuators[{self.entry}]"
+        """``spec actuators[i]`` (or ``motors[i]``), or ``mjcf`` for the file's own actuator."""
+        return FROM_FILE if self.entry is None else f"spec {self.section}[{self.entry}]"
 
 
 def _file_records(spec: mujoco.MjSpec) -> list[ActuatorRecord]:

@@ -28,6 +28,7 @@ from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.collision_colour import collision_colour_note, colour_collision_geoms
 from assembler.models.joint_rules import JointTable
+from assembler.models.motor_table import MOTORS
 from assembler.models.physical import PhysicalTable, apply_physical
 from assembler.models.preparation import PreparedPart, init_qpos_problems, prepare
 from assembler.models.registering import RegisteringMeta, Registry
@@ -213,12 +214,20 @@ class PartModel(metaclass=RegisteringMeta):
         return PartInputs(
             family=self.family,
             classes=classes,
-            spec_json=json.dumps(self.spec.model_dump(mode="json"), sort_keys=True),
+            spec_json=json.dumps(self._spec_data(), sort_keys=True),
             mjcf=model_file,
             idn=repr(self.idn),
             joint_edits=tuple(self.joint_edits),
             spec_made=spec_made,
         )
+
+    def _spec_data(self) -> dict[str, Any]:
+        """The spec as data, with the motor specs its ``motors:`` entries name: a changed motor spec
+        changes the build."""
+        data = self.spec.model_dump(mode="json")
+        if self.spec.motors:
+            data["motor_specs"] = MOTORS.inputs([entry.motor for entry in self.spec.motors])
+        return data
 
     def describe(self) -> str:
         """How errors name this part: ``specs/x.yaml:1:1: gripper 'X'``."""

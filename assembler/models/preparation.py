@@ -4,7 +4,7 @@ Steps, once per part instance: drop the file's keyframes (the assembler writes o
 keyframe), remove the actuation of the joints the spec names (with everything driving or measuring
 them), remove the free joint if asked, add the spec's joints, add the actuators and contact
 exclusions the spec declares, then resolve every joint parameter (MJCF value, spec rule, spec
-override) with its source.
+override) with its source, and put the spec's motors on their joints (values and actuators).
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ from assembler.models.joint_rules import (
     matching_joints,
     no_match,
 )
+from assembler.models.motor_joints import add_motor_actuators, apply_motor_values, motor_drives
 from assembler.models.physical import PhysicalTable, resolve_physical
 from assembler.models.provenance import Provenance
 from assembler.models.spec_names import NameCheck
@@ -173,4 +174,10 @@ def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[P
     except SpecError as error:
         problems += error.problems
         table = {}
+    drives, motor_problems = motor_drives(mjspec, spec.motors, problem)
+    problems += motor_problems
+    if drives and not motor_problems:
+        apply_motor_values(table, drives)
+        actuators, motor_problems = add_motor_actuators(mjspec, actuators, drives, problem)
+        problems += motor_problems
     return PreparedPart(source, mjspec, root, kept, table, actuators, physical), problems

@@ -9,9 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-Origin = Literal["mjcf", "rule", "override", "added", "api"]
+Origin = Literal["mjcf", "rule", "override", "added", "motor", "api"]
 """The MJCF file itself, a spec default rule, a spec ``joints:`` override, a joint the spec adds,
-or a ``set_joint_attribute`` call."""
+the motor a spec ``motors:`` entry puts on the joint, or a ``set_joint_attribute`` call."""
 
 HowAuthored = Literal["literal", "main default", "class", "urdf <dynamics>"]
 """How the model file sets a value: on the element, in its main ``<default>``, through a default class
@@ -33,7 +33,17 @@ class Provenance:
     """For ``rule``: the rule as written, e.g. ``5/(i+1)``, ``0.1`` or ``(list)``."""
 
     index: int | None = None
-    """For ``override`` and ``added``: the index of the spec entry (``joints[i]``, ``added_joints[i]``)."""
+    """For ``override``, ``added`` and ``motor``: the index of the spec entry (``joints[i]``,
+    ``added_joints[i]``, ``motors[i]``)."""
+
+    motor: str = ""
+    """For ``motor``: the motor spec's name."""
+
+    formula: str = ""
+    """For ``motor``: how the value follows from the motor spec, e.g. ``rotor_inertia × gear_ratio²``."""
+
+    numbers: str = ""
+    """For ``motor``: the formula with the motor spec's numbers, e.g. ``1.12e-05 kg·m² × 29.5²``."""
 
     inverse_index: float | None = None
     """For the inverse-index rule ``scale/(i+1)``: its scale."""
@@ -55,6 +65,8 @@ class Provenance:
             return f"spec joints[{self.index}]"
         if self.origin == "added":
             return f"spec added_joints[{self.index}]"
+        if self.origin == "motor":
+            return f"spec motors[{self.index}] {self.motor}: {self.formula}"
         return "set_joint_attribute"
 
 

@@ -24,6 +24,7 @@ from assembler.models import (
     PartModel,
     source_of,
 )
+from assembler.models.motor_table import MOTORS
 from assembler.registry import shipped
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
@@ -38,8 +39,8 @@ from assembler.spec.documents import (
 from assembler.spec.documents import apply_overrides as apply_document_overrides
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.part_arguments import SPEC_SUFFIXES, ArgumentKind, argument_kind
-from assembler.spec.schema import SPEC_KINDS, BaseSpec, PartSpec, RobotSpec
-from assembler.spec.spec_files import load_paths, load_string
+from assembler.spec.schema import SPEC_KINDS, BaseSpec, MotorSpec, PartSpec, RobotSpec
+from assembler.spec.spec_files import MOTOR_KIND, load_spec_paths, load_string
 
 NAME = FieldPath(("name",))
 P = TypeVar("P", bound=PartModel)
@@ -118,10 +119,14 @@ def _all_or_nothing() -> Iterator[None]:
         yield
 
 
-def register_loaded(batch: list[LoadedSpec[PartSpec]]) -> list[type[PartModel]]:
-    """Register a batch of validated specs: all of them, or (on any problem) none."""
+def register_loaded(
+    batch: list[LoadedSpec[PartSpec]], motors: Sequence[LoadedSpec[MotorSpec]] = ()
+) -> list[type[PartModel]]:
+    """Register a batch of validated specs (and the motor specs beside them): all of them, or (on any
+    problem) none."""
     _check_names(batch)
-    with _all_or_nothing():
+    with _all_or_nothing(), MOTORS.transaction():
+        MOTORS.add(motors)
         for loaded in batch:  # the same spec as a registered copy (checked above): the file given wins
             table = REGISTRIES[kind_of(loaded.spec)]
             existing = table.get(loaded.spec.name)
@@ -131,8 +136,9 @@ def register_loaded(batch: list[LoadedSpec[PartSpec]]) -> list[type[PartModel]]:
 
 
 def register_specs(*paths: str | Path) -> list[type[PartModel]]:
-    """Validate and register every spec in the given files and folders (all or nothing)."""
-    return register_loaded(load_paths(paths, PARENTS))
+    """Validate and register every spec in the given files and folders (all or nothing), motor specs
+    among them."""
+    return register_loaded(*load_spec_paths(paths, PARENTS))
 
 
 def register_spec_string(text: str) -> type[PartModel]:
@@ -189,7 +195,7 @@ def _part_specs_beside(files: Sequence[Path]) -> list[Path]:
                 data = yaml.safe_load(path.read_text(encoding="utf-8"))
             except (OSError, UnicodeDecodeError, yaml.YAMLError):
                 continue  # not ours to report: the file was not asked for
-            if isinstance(data, dict) and data.get("kind", "robot") in SPEC_KINDS:
+            if isinstance(data, dict) and data.get("kind", "robot") in (*SPEC_KINDS, MOTOR_KIND):
                 beside.append(path)
     return beside
 

@@ -27,14 +27,16 @@ from assembler.spec.spec_files import spec_files
 PART_KINDS = ("robot", "base", "gripper")
 """The spec kinds that are registered parts (a scene or an experiment in the folder is neither)."""
 
-_PLACEMENTS = ("scene", "experiment")
+_NOT_PARTS = ("scene", "experiment", "motor")
+"""Kinds of spec in the folder that are no registered part: motors are read by the motor table
+(:mod:`assembler.models.motor_table`) when one is first looked up."""
 
 _NAME = re.compile(r"""^name:[ \t]*(['"]?)([A-Za-z_][\w.-]*)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
 _KIND = re.compile(r"""^kind:[ \t]*(['"]?)(\w+)\1[ \t]*(?:#.*)?$""", re.MULTILINE)
 
 
 def _scanned(file: Path, folder: Path) -> tuple[str, str] | None:
-    """(kind, name) of a part spec file; ("", "") for a scene or experiment; None if unclear."""
+    """(kind, name) of a part spec file; ("", "") for a scene, experiment or motor; None if unclear."""
     try:
         if not file.resolve().is_relative_to(folder):
             return None
@@ -43,7 +45,7 @@ def _scanned(file: Path, folder: Path) -> tuple[str, str] | None:
         return None
     names, kinds = _NAME.findall(text), _KIND.findall(text)
     kind = kinds[0][1] if len(kinds) == 1 else "robot" if not kinds else ""
-    if kind in _PLACEMENTS:
+    if kind in _NOT_PARTS:
         return ("", "")
     if len(names) != 1 or kind not in PART_KINDS:
         return None

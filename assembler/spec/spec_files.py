@@ -14,7 +14,6 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, display_path
-from assembler.spec.part_arguments import SPEC_SUFFIXES
 from assembler.spec.documents import (
     LoadedSpec,
     LocatedDocument,
@@ -27,9 +26,18 @@ from assembler.spec.documents import (
     validate,
 )
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema import SPEC_KINDS, PartSpec
+from assembler.spec.part_arguments import SPEC_SUFFIXES
+from assembler.spec.schema import SPEC_KINDS, MotorSpec, PartSpec
 
-__all__ = ["LoadedSpec", "load_documents", "load_paths", "load_string", "spec_files"]
+__all__ = [
+    "LoadedSpec",
+    "load_documents",
+    "load_motors",
+    "load_paths",
+    "load_spec_paths",
+    "load_string",
+    "spec_files",
+]
 
 KIND = FieldPath(("kind",))
 
@@ -68,8 +76,25 @@ def load_documents(
     return loaded
 
 
+def load_motors(documents: Iterable[LocatedDocument]) -> list[LoadedSpec[MotorSpec]]:
+    """Validate motor spec documents (``kind: motor``); all problems in one error."""
+    loaded: list[LoadedSpec[MotorSpec]] = []
+    problems: list[Problem] = []
+    for document in documents:
+        try:
+            loaded.append(validate(document, MotorSpec))
+        except AssemblerError as error:
+            problems.extend(error.problems)
+    if problems:
+        raise SpecError(problems)
+    return loaded
+
+
 PLACEMENT_KINDS: tuple[str, ...] = ("scene", "experiment")
 """Kinds of spec file that place registered robots rather than describe a part."""
+
+MOTOR_KIND = "motor"
+"""The kind of a motor spec: data that parts' ``motors:`` entries name, not a part."""
 
 
 @dataclass
@@ -81,6 +106,9 @@ class SpecFiles:
 
     placements: list[LocatedDocument] = field(default_factory=list)
     """Scenes and experiments (found in folders, or given)."""
+
+    motors: list[LocatedDocument] = field(default_factory=list)
+    """Motor specs."""
 
     problems: list[Problem] = field(default_factory=list)
     """Files that could not be read."""
@@ -107,14 +135,26 @@ def read_spec_files(paths: Iterable[str | Path]) -> SpecFiles:
             except AssemblerError as error:
                 problems.extend(error.problems)
                 continue
-            placement = document.data.get("kind") in PLACEMENT_KINDS
-            (found.placements if placement else found.parts).append(document)
+            kind = document.data.get("kind")
+            if kind == MOTOR_KIND:
+                found.motors.append(document)
+            else:
+                (found.placements if kind in PLACEMENT_KINDS else found.parts).append(document)
     return found
 
 
 def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> list[LoadedSpec[PartSpec]]:
     """Load the part specs in spec files and folders (recursively) together; every problem of every
-    file at once. Scene and experiment files in folders are not parts and are left to their commands."""
+    file at once (motor specs among them are checked too). Scene and experiment files in folders are
+    not parts and are left to their commands."""
+    return load_spec_paths(paths, parents)[0]
+
+
+def load_spec_paths(
+    paths: Iterable[str | Path], parents: Parents | None = None
+) -> tuple[list[LoadedSpec[PartSpec]], list[LoadedSpec[MotorSpec]]]:
+    """The part specs and the motor specs in spec files and folders (recursively), loaded together;
+    every problem of every file at once."""
     paths = list(paths)
     found = read_spec_files(paths)
     problems = list(found.problems)
@@ -130,9 +170,14 @@ def load_paths(paths: Iterable[str | Path], parents: Parents | None = None) -> l
     except AssemblerError as error:
         problems.extend(error.problems)
         loaded = []
+    try:
+        motors = load_motors(found.motors)
+    except AssemblerError as error:
+        problems.extend(error.problems)
+        motors = []
     if problems:
         raise SpecError(problems)
-    return loaded
+    return loaded, motors
 
 
 def load_string(text: str, parents: Parents | None = None, name: str = "<string>") -> LoadedSpec[PartSpec]:

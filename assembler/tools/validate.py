@@ -20,7 +20,7 @@ from assembler.registry.references import placement_reference_problems, spec_ref
 from assembler.spec.documents import LocatedDocument, validate
 from assembler.spec.documents.problems import reading_order
 from assembler.spec.schema import ExperimentSpec, SceneSpec
-from assembler.spec.spec_files import load_documents, read_spec_files
+from assembler.spec.spec_files import load_documents, load_motors, read_spec_files
 
 PLACEMENT_MODELS: dict[str, type[SceneSpec] | type[ExperimentSpec]] = {
     "scene": SceneSpec,
@@ -84,7 +84,7 @@ def validate_specs(paths: Sequence[str | Path], compile: bool = False) -> Valida
     found = read_spec_files(paths)
     if found.problems:
         raise AssemblerError(found.problems)
-    classes = register_loaded(load_documents(found.parts, PARENTS))
+    classes = register_loaded(load_documents(found.parts, PARENTS), load_motors(found.motors))
     report = ValidationReport(classes, placements=[document.file for document in found.placements])
     problems: list[Problem] = []
     for document in found.placements:

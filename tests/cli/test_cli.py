@@ -130,6 +130,7 @@ def test_schema_is_json_schema_with_every_field_documented(capsys: pytest.Captur
         "#/$defs/RobotSpec",
         "#/$defs/BaseSpec",
         "#/$defs/GripperSpec",
+        "#/$defs/MotorSpec",
         "#/$defs/SceneSpec",
         "#/$defs/ExperimentSpec",
     ]

@@ -13,6 +13,7 @@ from assembler.spec.schema.joints import (
     JointOverride,
     JointRule,
 )
+from assembler.spec.schema.motor import JointMotor, MotorSpec
 from assembler.spec.schema.parts import PartSpec
 from assembler.spec.schema.physical import BODY_SCALES, BodyScale, GeomFriction
 from assembler.spec.schema.robot import GROUPS, Arm, GripperMount, JointGroups, RobotSpec
@@ -43,7 +44,9 @@ __all__ = [
     "JointDefaults",
     "JointGroups",
     "JointOverride",
+    "JointMotor",
     "JointRule",
+    "MotorSpec",
     "PartSpec",
     "RobotSpec",
     "SceneRobot",

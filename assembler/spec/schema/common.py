@@ -10,6 +10,11 @@ from pydantic_core import PydanticCustomError
 FiniteFloat = Annotated[float, Field(allow_inf_nan=False)]
 """A real number; NaN and infinities are refused at validation."""
 
+NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
+
+Name = Annotated[str, Field(pattern=NAME_PATTERN, max_length=64)]
+"""A registry name: it becomes a Python class name, so letters, digits and underscores."""
+
 NonNegativeFloat = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
 """A finite number that is zero or larger."""
 

@@ -20,6 +20,7 @@ from assembler.spec.schema.base_spec import BaseSpec
 from assembler.spec.schema.common import StrictModel
 from assembler.spec.schema.experiment import ExperimentSpec
 from assembler.spec.schema.gripper import GripperSpec
+from assembler.spec.schema.motor import MotorSpec
 from assembler.spec.schema.reference import markdown_reference
 from assembler.spec.schema.robot import RobotSpec
 from assembler.spec.schema.scene import SceneSpec
@@ -125,8 +126,9 @@ def _describe_fields(models: tuple[type[StrictModel], ...]) -> None:
 
 
 def spec_json_schema() -> dict[str, object]:
-    """The JSON Schema of every spec file (robot, base, gripper, scene), for editors and review bots."""
-    models = (RobotSpec, BaseSpec, GripperSpec, SceneSpec, ExperimentSpec)
+    """The JSON Schema of every spec file (robot, base, gripper, motor, scene, experiment), for editors
+    and review bots."""
+    models = (RobotSpec, BaseSpec, GripperSpec, MotorSpec, SceneSpec, ExperimentSpec)
     _describe_fields(models)
     _, schema = models_json_schema(
         [(m, "validation") for m in models], ref_template="#/$defs/{model}", schema_generator=_FactoryDefaults
@@ -136,7 +138,8 @@ def spec_json_schema() -> dict[str, object]:
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "robot-assembler spec",
-        "description": "A robot, base, gripper or scene spec; `kind` says which (robot if absent).",
+        "description": "A robot, base, gripper, motor, scene or experiment spec; `kind` says which (robot "
+        "if absent).",
         "anyOf": [{"$ref": f"#/$defs/{m.__name__}"} for m in models],
         **schema,
     }

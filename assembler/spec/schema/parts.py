@@ -2,21 +2,18 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Literal
 
 from pydantic import Field, model_validator
 
 from assembler.spec.schema.actuators import ActuatorDeclaration
 from assembler.spec.schema.common import FiniteFloat, StrictModel, rule_error
+from assembler.spec.schema.common import Name as Name  # where the other schemas find it
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.spec.schema.joints import JointDefaults, JointOverride
 from assembler.spec.schema.lint import LintOptions
+from assembler.spec.schema.motor import JointMotor
 from assembler.spec.schema.physical import BodyScale, GeomFriction
-
-NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
-
-Name = Annotated[str, Field(pattern=NAME_PATTERN, max_length=64)]
-"""A registry name: it becomes a Python class name, so letters, digits and underscores."""
 
 NO_RULES = JointDefaults(frictionloss=None, damping=None, armature=None)
 """Bases and grippers keep their MJCF's joint values unless their spec says otherwise (as in robosuite)."""
@@ -68,6 +65,11 @@ class PartSpec(StrictModel):
 
     actuators: list[ActuatorDeclaration] = Field(default_factory=list)
     """Actuators to add, one per matched joint; a later entry replaces an earlier one's on the same joint."""
+
+    motors: list[JointMotor] = Field(default_factory=list)
+    """Motors on the joints whose names match: each joint's armature, damping and frictionloss from the
+    motor and gearbox (unless ``joints:`` sets them), and an actuator that replaces the joint's own
+    (docs/motors.md); a later entry replaces an earlier one on the same joint."""
 
     contact_excludes: list[tuple[str, str]] = Field(default_factory=list)
     """Pairs of bodies (as named in the file) that never collide, e.g. links whose collision meshes
