@@ -33,6 +33,9 @@ ALLOW_VARIABLE = "ASSEMBLER_ALLOW_PATHS"
 
 ALLOW_HINT = f"pass --allow-path DIR (or set {ALLOW_VARIABLE}) to allow it"
 
+GIT_FOLDER = ".git"
+"""A checkout's git folder (or file): never read for a spec, whatever folder would admit it (SECURITY.md)."""
+
 _PACKAGE_DIR = Path(__file__).resolve().parent.parent  # assembler/, this file is in assembler/files/
 
 
@@ -132,12 +135,18 @@ def confine(path: Path, homes: Iterable[Path], what: str, error: type[AssemblerE
         roots = [*(_resolved_folder(home) for home in homes), *trusted_folders()]
     except (OSError, ValueError, RuntimeError) as problem:  # a loop of links, a NUL byte
         raise error(f"{what}{path}: cannot resolve this path ({problem})") from None
-    if any(resolved.is_relative_to(root) for root in roots):
+    admitting = [root for root in roots if resolved.is_relative_to(root)]
+    written = Path(os.path.normpath(os.path.abspath(path)))
+    link = f" (a link to {display_path(resolved)})" if resolved != written else ""
+    if any(GIT_FOLDER in resolved.relative_to(root).parts for root in admitting):
+        raise error(
+            f"{what}{display_path(written)}{link} is inside a {GIT_FOLDER} folder, which a spec may never "
+            "read (whatever a repository allows); name a file of the checkout itself"
+        )
+    if admitting:
         _homes.setdefault(resolved, set()).update(_resolved_folder(home) for home in homes)
         note_resolution(path, resolved)  # a link on the way: the cache checks it was not re-pointed
         return resolved
-    written = Path(os.path.normpath(os.path.abspath(path)))
-    link = f" (a link to {display_path(resolved)})" if resolved != written else ""
     reach, hint = _repository_advice(homes, resolved)
     raise error(
         f"{what}{display_path(written)}{link} is outside the folders a spec may read (its own "

@@ -163,6 +163,11 @@ def _folders(root: Path, where: str, key: str, settings: dict[str, Any]) -> tupl
                 f"{where}: {key}: '{item}' leads to {folder}, outside the repository {root}; "
                 "a spec repository may only open its own folders to its specs"
             )
+        if ".git" in folder.relative_to(root).parts:
+            raise SpecError(
+                f"{where}: {key}: '{item}' is inside the checkout's .git folder, which a spec may never "
+                "read; name other folders"
+            )
         if not folder.is_dir():
             if given:
                 raise SpecError(f"{where}: {key}: '{item}' is not a folder of the repository {root}")

@@ -154,6 +154,18 @@ def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: 
             id="package-linking-out",
         ),
         pytest.param(
+            'allow = [".git"]\n',
+            "{marker}: allow: '.git' is inside the checkout's .git folder, which a spec may never read; "
+            "name other folders",
+            id="the-git-folder",
+        ),
+        pytest.param(
+            'allow = [".git/objects"]\n',
+            "{marker}: allow: '.git/objects' is inside the checkout's .git folder, which a spec may never "
+            "read; name other folders",
+            id="inside-the-git-folder",
+        ),
+        pytest.param(
             'alow = ["assets"]\n',
             "{marker}: unknown key 'alow'. Did you mean 'allow'? Valid keys: specs, assets, allow, packages",
             id="unknown-key",
@@ -308,3 +320,41 @@ def test_a_declared_package_is_named_by_its_package_xml_read_safely(
     with pytest.raises(SpecError) as caught:
         assembler.register_specs(spec)
     assert str(caught.value) == f"{spec}:2:7: mjcf: " + message.format(marker=marker, tmp=tmp_path)
+
+
+GIT_REFUSAL = "is inside a .git folder, which a spec may never read (whatever a repository allows); name a file of the checkout itself"
+
+
+@pytest.mark.parametrize(
+    ("declaration", "spec_at", "mjcf", "refused"),
+    [
+        pytest.param('allow = ["."]\n', "lab/specs/git.yaml", "../.git/config", "lab/.git/config", id="allow-dot"),
+        pytest.param("", "lab/git.yaml", ".git/config", "lab/.git/config", id="a-spec-beside-git"),
+        pytest.param('allow = ["."]\n', "lab/specs/git.yaml", "../.git", "lab/.git", id="the-folder-itself"),
+        pytest.param('allow = ["."]\n', "lab/specs/git.yaml", "../config-link", "lab/config-link (a link to {tmp}/lab/.git/config)", id="a-link-into-git"),
+    ],
+)  # fmt: skip
+def test_no_spec_reads_the_git_folder_whatever_allow_says(
+    write: Write, tmp_path: Path, declaration: str, spec_at: str, mjcf: str, refused: str
+) -> None:
+    lab(write, ("robot-assembler.toml", declaration))
+    write("lab/.git/config", TWO_LINK_MJCF)  # an MJCF there would build: only the rule refuses it
+    (tmp_path / "lab" / "config-link").symlink_to(".git/config")
+    spec = write(spec_at, f"name: Git\nmjcf: {mjcf}\n")
+    with pytest.raises(SpecError) as caught:
+        assembler.register_specs(spec)
+    shown = f"{tmp_path}/{refused}".format(tmp=tmp_path)
+    assert str(caught.value) == f"{spec}:2:7: mjcf: {shown} {GIT_REFUSAL}"
+
+
+def test_no_mesh_is_read_from_the_git_folder_whatever_allow_says(write: Write, tmp_path: Path) -> None:
+    lab(write, ("robot-assembler.toml", 'allow = ["."]\n'))
+    write("lab/.git/tetra.obj", TETRAHEDRON_OBJ)
+    write("lab/assets/arm/meshy.xml", MESH_MJCF.format(meshdir="../../.git", file="tetra.obj"))
+    spec = write("lab/specs/meshy.yaml", "name: Meshy\nmjcf: ../assets/arm/meshy.xml\n")
+    (cls,) = assembler.register_specs(spec)
+    with pytest.raises(MjcfError) as caught:
+        cls(idn=0).check()
+    assert str(caught.value) == (
+        f"{spec}:2:7: mjcf: {tmp_path}/lab/assets/arm: asset file {tmp_path}/lab/.git/tetra.obj {GIT_REFUSAL}"
+    )
