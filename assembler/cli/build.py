@@ -11,7 +11,7 @@ from pathlib import Path
 from assembler.answers.request import record_answer
 from assembler.cli.cached_build import build_flags, request_of, write_xml
 from assembler.cli.common import assembled, idle_override_warnings, use_cache
-from assembler.tools.engine_check import check_with_mujoco_warp
+from assembler.gpu.put_model_check import check_with_mujoco_warp
 
 
 def run(args: argparse.Namespace) -> int:

@@ -17,10 +17,10 @@ from typing import Literal
 
 import mujoco
 
+from assembler.checks.finding import Finding, Severity
+from assembler.checks.target import ACTUATOR_TAGS, LintTarget
 from assembler.errors import Location
 from assembler.files.paths import display_path
-from assembler.tools.lint.finding import Finding, Severity
-from assembler.tools.lint.target import ACTUATOR_TAGS, LintTarget
 
 Engine = Literal["mujoco", "mjwarp", "mjx"]
 """What ``assembler lint --target`` checks a model for: MuJoCo alone, or also MuJoCo Warp or MJX."""

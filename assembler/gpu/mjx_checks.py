@@ -13,8 +13,9 @@ from collections.abc import Iterator
 
 import mujoco
 
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.gpu import (
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
+from assembler.gpu.engines import (
     KindTable,
     collidable_pairs,
     geom_type_name,
@@ -22,7 +23,6 @@ from assembler.tools.lint.gpu import (
     refused_elements,
     refused_solver_and_enable_flags,
 )
-from assembler.tools.lint.target import LintTarget
 
 MJX_COLLISION_PAIRS: frozenset[tuple[str, str]] = frozenset(
     {

@@ -12,15 +12,15 @@ from collections.abc import Iterator
 import mujoco
 import numpy as np
 
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.gpu import (
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
+from assembler.gpu.engines import (
     KindTable,
     flag_names,
     option_finding,
     refused_elements,
     refused_solver_and_enable_flags,
 )
-from assembler.tools.lint.target import LintTarget
 
 WARP_ELEMENT_KINDS: tuple[KindTable, ...] = (
     KindTable("actuator_trntype", "mjtTrn", ("mjTRN_SO3",)),

@@ -44,7 +44,6 @@ from assembler.robosuite.parts import undriven_joints
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 
-
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR
 

@@ -24,17 +24,17 @@ import pytest
 
 from assembler.cli import main
 from assembler.cli.arguments import LINT_TARGETS
-from assembler.registry.catalog import classes_named
-from assembler.registry.instances import assemble
-from assembler.tools.lint import ENGINES
-from assembler.tools.lint.gpu_mjx import MJX_COLLISION_PAIRS, MJX_ELEMENT_KINDS, MJX_ENABLE_REFUSED
-from assembler.tools.lint.gpu_warp import (
+from assembler.gpu.mjx_checks import MJX_COLLISION_PAIRS, MJX_ELEMENT_KINDS, MJX_ENABLE_REFUSED
+from assembler.gpu.warp_checks import (
     WARP_DISABLE_REFUSED,
     WARP_ELEMENT_KINDS,
     WARP_ENABLE_REFUSED,
     WARP_SOLVERS_REFUSED,
     warp_default_njmax,
 )
+from assembler.registry.catalog import classes_named
+from assembler.registry.instances import assemble
+from assembler.tools.lint import ENGINES
 
 Write = Callable[[str, str], Path]
 

@@ -47,18 +47,29 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
-from assembler.tools.lint.acknowledgements import acknowledge
-from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
-from assembler.tools.lint.armature import tiny_index_armature
-from assembler.tools.lint.finding import SEVERITIES, Finding, Severity
-from assembler.tools.lint.gpu import ENGINES, Engine
-from assembler.tools.lint.gpu_mjx import (
+from assembler.checks.finding import SEVERITIES, Finding, Severity
+from assembler.checks.target import LintTarget, part_target, robot_target
+from assembler.gpu.engines import ENGINES, Engine
+from assembler.gpu.mjx_checks import (
     mjx_mesh_margins_and_sizes,
     mjx_missing_collisions,
     mjx_refused_elements,
     mjx_refused_options,
 )
-from assembler.tools.lint.gpu_warp import warp_constraint_budget, warp_refused_elements, warp_refused_options
+from assembler.gpu.warp_checks import warp_constraint_budget, warp_refused_elements, warp_refused_options
+from assembler.robosuite.checks import (
+    foreign_euler_sequences,
+    grip_frames_added_for_robosuite,
+    gripper_without_actions,
+    missing_arm_centers,
+    servos_robosuite_cannot_drive,
+    undriven_controlled_joints,
+    unreadable_base_offsets,
+    unusable_controllers,
+)
+from assembler.tools.lint.acknowledgements import acknowledge
+from assembler.tools.lint.actuators import ctrlrange_beyond_joint_range, unlimited_driven_joints
+from assembler.tools.lint.armature import tiny_index_armature
 from assembler.tools.lint.gripper_pose import gripper_root_far_from_hand
 from assembler.tools.lint.important_names import (
     important_geoms_without_contact,
@@ -68,15 +79,6 @@ from assembler.tools.lint.important_names import (
 from assembler.tools.lint.keyframe import keyframe_outside_limits
 from assembler.tools.lint.mass import degenerate_inertia, implausible_density, oversized_inertia
 from assembler.tools.lint.penetration import self_penetration
-from assembler.tools.lint.robosuite_bridge import (
-    foreign_euler_sequences,
-    undriven_controlled_joints,
-    unreadable_base_offsets,
-    unusable_controllers,
-)
-from assembler.tools.lint.robosuite_grippers import grip_frames_added_for_robosuite, gripper_without_actions
-from assembler.tools.lint.robosuite_robots import missing_arm_centers, servos_robosuite_cannot_drive
-from assembler.tools.lint.target import LintTarget, part_target, robot_target
 from assembler.tools.lint.visibility import invisible_parts
 
 Check = Callable[[LintTarget], Iterator[Finding]]

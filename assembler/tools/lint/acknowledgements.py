@@ -15,10 +15,10 @@ import dataclasses
 import re
 from collections.abc import Iterator
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.models import PartModel, RobotModel
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
 
 _NAME = re.compile(r"[A-Za-z0-9_:.\-]+")
 

@@ -12,8 +12,8 @@ from collections.abc import Iterator
 import mujoco
 import numpy as np
 
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import ACTUATOR_TAGS, LintTarget
+from assembler.checks.finding import Finding
+from assembler.checks.target import ACTUATOR_TAGS, LintTarget
 
 RANGE_TOLERANCE = 1e-6
 """Rounding slack (rad or m) when comparing ranges."""

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
 
 TINY_ARMATURE = 0.2
 """Rule-given armature (kg m^2) below this is reported: the rule, not the motor, chose it."""

@@ -12,10 +12,10 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.models import GripperModel, ManipulatorModel
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
 
 ROOT_OFFSET_LIMIT = 0.2
 """Metres between a gripper's root and its hand beyond which the root's pose is not a mount offset

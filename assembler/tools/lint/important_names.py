@@ -11,11 +11,11 @@ from collections.abc import Iterator
 
 import mujoco
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.models import GripperModel, ManipulatorModel, PartModel
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
 from assembler.tools.lint.geometry import collides
-from assembler.tools.lint.target import LintTarget
 
 FINGERPAD_ROLES: tuple[str, ...] = ("left_fingerpad", "right_fingerpad")
 """The important_geoms roles robosuite's grasp check (``_check_grasp``) reads."""

@@ -11,10 +11,10 @@ from collections.abc import Iterator
 
 import mujoco
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.mjcf.keyframe import HOME_KEY
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
 
 LIMIT_TOLERANCE = 1e-6
 """Rounding slack (rad or m) when comparing a keyframe value with a range bound."""

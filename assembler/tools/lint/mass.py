@@ -13,9 +13,9 @@ from collections.abc import Iterator
 import mujoco
 import numpy as np
 
-from assembler.tools.lint.finding import Finding
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.tools.lint.geometry import FloatArray, reach, shape_volume
-from assembler.tools.lint.target import LintTarget
 
 DENSITY_RANGE = (100.0, 20000.0)
 """Plausible mean densities (kg/m^3): from foam and hollow plastic shells to tungsten."""

@@ -12,8 +12,8 @@ from collections.abc import Iterator
 
 import mujoco
 
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 
 PENETRATION_TOLERANCE = 1e-3
 """Overlap (metres) below which contact is touching, not penetration (MuJoCo's soft contacts sink ~1 mm)."""

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from assembler.checks.finding import Finding
+from assembler.checks.target import LintTarget
 from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUPS
 from assembler.models.geom_groups import geoms_by_part
 from assembler.spec.fieldpath import FieldPath
-from assembler.tools.lint.finding import Finding
-from assembler.tools.lint.target import LintTarget
 
 
 def invisible_parts(target: LintTarget) -> Iterator[Finding]:
