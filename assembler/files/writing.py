@@ -1,6 +1,9 @@
 """The one door for writing the user's files: atomically, with their usual permissions, only over
 what may be replaced, every failure one line.
 
+Every command and API that writes a user's file (``build -o`` and ``--bundle``, ``new``, ``scene``,
+``experiment``, ``variants``, ``render``, ``RobotModel.save()``) writes through one function,
+:func:`replace_file`; only the cache writes inside its own folder by itself (a test holds this).
 A failed build must never leave a partial file or clobber the user's previous output, so every
 file is written to a temporary file in the target folder and moved into place with one rename.
 A file system error (no permission, disk full, a folder in the way, a name too long) is an
@@ -20,8 +23,9 @@ import os
 import shutil
 import stat
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import BinaryIO
 
 from assembler.errors import AssemblerError
 from assembler.files.inputs import input_at
@@ -133,41 +137,40 @@ def _temporary(target: Path) -> tuple[int, str]:
     return tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=target.parent)
 
 
-def _write_replacing(path: Path, data: bytes) -> None:
-    check_target(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = _temporary(path)
-    try:
-        os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        check_target(path)  # again: something may have been put there meanwhile
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-
-
-def write_atomically(path: Path, content: str | bytes) -> None:
-    """Write ``content`` to ``path`` so readers see the old file or the whole new one, never half."""
-    data = content.encode() if isinstance(content, str) else content
+def replace_file(path: Path, fill: Callable[[BinaryIO], object]) -> None:
+    """The door every write of a user's file goes through: ``fill(stream)`` writes the new content to
+    a temporary file beside ``path``, which then replaces ``path`` with one rename, so readers see
+    the old file or the whole new one, never half. :func:`check_target` is asked before and again
+    just before the rename (something may have been put there meanwhile); a file system error is one
+    line naming ``path``, and the old file, if any, is left as it was."""
     with cannot_write(path):
-        _write_replacing(path, data)
-
-
-def copy_atomically(source: Path, target: Path) -> None:
-    """Copy ``source`` to ``target`` the same way (a failure names ``target``)."""
-    check_target(target)
-    with cannot_write(target):
-        handle, temporary = _temporary(target)
+        check_target(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        handle, temporary = _temporary(path)
         try:
-            os.fchmod(handle, _mode_for(target))
-            os.close(handle)
-            shutil.copyfile(source, temporary)
-            check_target(target)
-            os.replace(temporary, target)
+            os.fchmod(handle, _mode_for(path))  # mkstemp makes 0600; users expect their usual permissions
+            with os.fdopen(handle, "wb") as stream:
+                fill(stream)
+                stream.flush()
+                os.fsync(stream.fileno())
+            check_target(path)
+            os.replace(temporary, path)
         except BaseException:
             Path(temporary).unlink(missing_ok=True)
             raise
+
+
+def write_atomically(path: Path, content: str | bytes) -> None:
+    """Write ``content`` to ``path`` through :func:`replace_file`."""
+    data = content.encode() if isinstance(content, str) else content
+    replace_file(path, lambda stream: stream.write(data))
+
+
+def copy_atomically(source: Path, target: Path) -> None:
+    """Copy ``source`` to ``target`` through :func:`replace_file` (a failure names ``target``)."""
+
+    def fill(stream: BinaryIO) -> None:
+        with open(source, "rb") as original:
+            shutil.copyfileobj(original, stream)
+
+    replace_file(target, fill)

@@ -22,6 +22,7 @@ import mujoco
 from pydantic import TypeAdapter
 
 from assembler.errors import MjcfError, Problem
+from assembler.files.inputs import note_inputs
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
@@ -73,11 +74,14 @@ class MjcfSource:
 
 
 def _asset_file(directory: str, base: Path, file: str, homes: Collection[Path]) -> str:
-    """The asset's absolute path; it must stay in the allowed folders (MuJoCo reads it at compile)."""
+    """The asset's absolute path; it must stay in the allowed folders (MuJoCo reads it at compile),
+    and it is noted as an input no output may replace."""
     if not file:
         return file
     path = Path(file) if os.path.isabs(file) else base / directory / file
-    return str(confine(path, homes, f"{display_path(base)}: asset file ", MjcfError))
+    confined = str(confine(path, homes, f"{display_path(base)}: asset file ", MjcfError))
+    note_inputs([confined])
+    return confined
 
 
 MESH_CONTENT_TYPES: dict[str, str] = {

@@ -20,6 +20,7 @@ from collections.abc import Collection
 from pathlib import Path
 
 from assembler.errors import MjcfError
+from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
 from assembler.files.paths import confine, display_path
 
@@ -44,6 +45,7 @@ def _read(path: Path) -> bytes:
         raise MjcfError(f"{shown}: cannot read the file: {error.strerror}") from None
     if len(data) > MAX_MJCF_BYTES:
         raise MjcfError(f"{shown}: the file's size exceeds the limit of {MAX_MJCF_BYTES} bytes for MJCF")
+    note_inputs([path])  # an MJCF, an included file or a URDF: no output may replace it
     return data
 
 
@@ -104,6 +106,7 @@ def check_mjcf(path: Path, homes: Collection[Path]) -> list[Path]:
                 included = confine(folder / file, homes, f"{shown}: <{element}> file ", MjcfError)
                 if included.is_file() and included not in named:
                     named.append(included)
+                    note_inputs([included])  # a flexcomp's mesh too, which is not read here
                 if element != "flexcomp" and included.is_file():  # XML: check what it includes
                     pending.append((included, depth + 1))
     return named

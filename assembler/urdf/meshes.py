@@ -34,6 +34,7 @@ from assembler.cache.content import CONVERTED, content_folder, kept_file
 from assembler.cache.file_state import buffer_digest, file_digest
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
+from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_DAE_BYTES
 from assembler.files.paths import confine, display_path
 from assembler.files.plain_xml import check_plain_xml
@@ -182,6 +183,7 @@ def readable_mesh(source: Path) -> Path:
     """``source`` if MuJoCo reads it, else its OBJ conversion (made now if not made before)."""
     shown = display_path(source)
     check_mesh_format(source, shown)  # the file the name resolved to: a link may change the suffix
+    note_inputs([source])  # read here or by MuJoCo: no output may replace it
     if not needs_conversion(source):
         return source
     if source.suffix.lower() == ".dae" and not importable("collada"):

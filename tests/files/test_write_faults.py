@@ -204,7 +204,7 @@ def test_a_bundle_that_fails_leaves_no_folder_and_no_file_behind(
     )
     (robot / "arm.xml").write_text(mjcf)
     (robot / "arm.yaml").write_text("name: MeshArm\nmjcf: arm.xml\n")
-    monkeypatch.setattr(writing.shutil, "copyfile", disk_full)
+    monkeypatch.setattr(writing.shutil, "copyfileobj", disk_full)
     bundle = tmp_path / "out" / "deep" / "bundle"
     assert main(["build", str(robot / "arm.yaml"), "--bundle", str(bundle)]) == 1
     assert capsys.readouterr().err.endswith(": No space left on device\n")
