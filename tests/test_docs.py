@@ -1,5 +1,6 @@
 """The documentation holds: the generated pages (API and command-line references) are what their
-generator writes now, and every public name is declared once and documented."""
+generator writes now, every public name is declared once and documented, and every relative link of
+the README and of docs/ leads somewhere."""
 
 from __future__ import annotations
 
@@ -17,6 +18,9 @@ import pytest
 import assembler
 
 ROOT = Path(__file__).parent.parent
+README = ROOT / "README.md"
+PAGES = sorted((ROOT / "docs").glob("*.md"))
+LINKED = [README, *PAGES]
 
 
 # ----- the API, declared once -------------------------------------------------------------------------
@@ -138,3 +142,61 @@ def test_every_command_and_flag_is_in_the_command_line_reference() -> None:
                     assert f"`{flag}" in section or f", {flag}" in section, f"{name} {flag}"
     for flag in ("--specs DIR", "--allow-path DIR"):
         assert f"| `{flag}` |" in reference
+
+
+# ----- links --------------------------------------------------------------------------------------------
+
+FENCED = re.compile(r"^```.*?^```", flags=re.DOTALL | re.MULTILINE)
+LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
+
+
+def _prose(page: Path) -> str:
+    """A page without its code blocks and inline code, where brackets are no links."""
+    return re.sub(r"`[^`\n]*`", "", FENCED.sub("", page.read_text()))
+
+
+def _anchors(page: Path) -> set[str]:
+    """The anchors GitHub makes of a page's headings: lower case, punctuation dropped, spaces to
+    hyphens, a repeated one numbered."""
+    anchors: set[str] = set()
+    for heading in re.findall(r"^#{1,6} +(.+?) *#*$", FENCED.sub("", page.read_text()), flags=re.MULTILINE):
+        slug = re.sub(r"[^\w\- ]", "", heading.lower()).replace(" ", "-")
+        anchor, n = slug, 0
+        while anchor in anchors:
+            n += 1
+            anchor = f"{slug}-{n}"
+        anchors.add(anchor)
+    return anchors
+
+
+def _relative_links(page: Path) -> list[str]:
+    return [target for target in LINK.findall(_prose(page)) if not re.match(r"[a-z]+:", target)]
+
+
+@pytest.mark.parametrize("page", LINKED, ids=lambda p: str(p.relative_to(ROOT)))
+def test_every_relative_link_leads_to_a_file_and_heading(page: Path) -> None:
+    broken = []
+    for target in _relative_links(page):
+        path, _, anchor = target.partition("#")
+        linked = (page.parent / path).resolve() if path else page
+        if not linked.exists():
+            broken.append(f"{target}: no file {linked.relative_to(ROOT.resolve())}")
+        elif anchor and linked.suffix == ".md" and anchor not in _anchors(linked):
+            broken.append(f"{target}: no heading '{anchor}' in {linked.name}")
+    assert broken == []
+
+
+def test_anchors_are_made_as_github_makes_them() -> None:
+    anchors = _anchors(ROOT / "docs" / "getting-started.md")
+    assert {"what-already-set-means", "spec-repositories", "robosuites-robots"} <= anchors
+    assert "the-robosuite-block" in _anchors(ROOT / "docs" / "robosuite.md")
+
+
+def test_the_index_leads_to_every_page() -> None:
+    linked = {target.partition("#")[0] for target in _relative_links(ROOT / "docs" / "index.md")}
+    assert sorted(page.name for page in PAGES if page.name != "index.md") == sorted(linked - {"../README.md"})
+
+
+def test_the_readme_leads_to_the_index_and_stays_short() -> None:
+    assert "docs/index.md" in _relative_links(README)
+    assert len(README.read_text().splitlines()) <= 200
