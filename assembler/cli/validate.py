@@ -19,7 +19,7 @@ def summary(report: ValidationReport, compiled: bool) -> list[str]:
     unchecked = set(report.unchecked)
     checked = [cls.__name__ for cls in report.classes if cls.__name__ not in unchecked]
     lines = []
-    if checked or not (unchecked or report.placements):
+    if checked or not (unchecked or report.placements or report.motors):
         what = "validated and compiled" if compiled else "valid"
         lines.append(f"{len(checked)} spec(s) {what}: {', '.join(checked)}")
     for package in report.missing.values():
@@ -28,6 +28,8 @@ def summary(report: ValidationReport, compiled: bool) -> list[str]:
             f"{' nor compiled' if compiled else ''}: {', '.join(package.specs)}"
         )
         lines.append(f"    because: {package.message}")
+    if report.motors:
+        lines.append(f"{len(report.motors)} motor spec(s) valid: {', '.join(report.motors)}")
     if report.placements:
         files = ", ".join(report.placements)
         lines.append(f"{len(report.placements)} scene and experiment file(s) valid: {files}")

@@ -106,7 +106,7 @@ def apply_motor_values(table: JointTable, drives: dict[str, Drive]) -> None:
                 values[attribute] = _motor_value(drive, derived)
             elif current is not None and current.source.origin == "rule":
                 why = f"no {attribute} given; rules skip motor-driven joints"
-                values[attribute] = _motor_value(drive, Derived(0.0, why, "0"))
+                values[attribute] = _motor_value(drive, Derived(0.0, why, ""))
 
 
 def _actuation(drive: Drive) -> tuple[MotorActuation, tuple[tuple[str, Derived], ...]]:
@@ -173,7 +173,7 @@ def derivation_lines(prefix: str, joints: JointTable, records: Sequence[Actuator
     for joint, values in joints.items():
         for attribute, value in values.items():
             source = value.source
-            if source.origin == "motor":
+            if source.origin == "motor" and source.numbers:  # a value the motor gives, not a 0 it leaves
                 where = f"(motor {source.motor}, motors[{source.index}]: {source.formula})"
                 lines.append(f"{prefix}{joint}  {attribute} {value.value:.6g} = {source.numbers}  {where}")
     for record in records:

@@ -98,7 +98,7 @@ class Drive:
             return None
         value = motor.rotor_inertia * n**2
         formula, numbers = "rotor_inertia × gear_ratio²", f"{_g(motor.rotor_inertia)} kg·m² × {_g(n)}²"
-        if motor.gearbox_inertia is not None and self.gear_ratio == motor.gear_ratio:
+        if motor.gearbox_inertia and self.gear_ratio == motor.gear_ratio:
             value += motor.gearbox_inertia
             formula += " + gearbox_inertia"
             numbers += f" + {_g(motor.gearbox_inertia)} kg·m²"

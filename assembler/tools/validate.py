@@ -52,6 +52,9 @@ class ValidationReport:
     placements: list[str] = field(default_factory=list)
     """Scene and experiment files checked (their schema and the names they use)."""
 
+    motors: list[str] = field(default_factory=list)
+    """Motor specs checked (their schema and the consistency of their ratings), by name."""
+
     missing: dict[str, MissingPackage] = field(default_factory=dict)
     """Packages not installed, by name, with the specs that could not be checked against their file."""
 
@@ -84,8 +87,10 @@ def validate_specs(paths: Sequence[str | Path], compile: bool = False) -> Valida
     found = read_spec_files(paths)
     if found.problems:
         raise AssemblerError(found.problems)
-    classes = register_loaded(load_documents(found.parts, PARENTS), load_motors(found.motors))
+    motors = load_motors(found.motors)
+    classes = register_loaded(load_documents(found.parts, PARENTS), motors)
     report = ValidationReport(classes, placements=[document.file for document in found.placements])
+    report.motors = [loaded.spec.name for loaded in motors]
     problems: list[Problem] = []
     for document in found.placements:
         problems += _placement_problems(document)

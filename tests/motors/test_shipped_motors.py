@@ -1,0 +1,98 @@
+"""The shipped motor catalogue: every motor spec validates and cites its source, and the shipped
+Unitree robots get the armature mjlab's constants give (computed here from the numbers mjlab cites,
+with mjlab's own formulas), and their motors' torque limits as force ranges."""
+
+from __future__ import annotations
+
+import pytest
+
+from assembler.files.paths import shipped_specs_dir
+from assembler.models.motor_table import MOTORS
+from assembler.registry.lookup import registered_class, robot_class
+from assembler.spec.spec_files import load_motors, read_spec_files
+from assembler.urdf.packages import package_folders
+
+NEEDS_URDFS = pytest.mark.skipif(
+    not package_folders("example-robot-data"), reason="the shipped Go2 and G1 read example-robot-data's URDFs"
+)
+
+SHIPPED = load_motors(read_spec_files([shipped_specs_dir() / "motors"]).motors)
+
+
+def reflected_inertia(rotor_inertia: float, gear_ratio: float) -> float:
+    """mjlab's ``mjlab.utils.actuator.reflected_inertia``."""
+    return rotor_inertia * gear_ratio**2
+
+
+def reflected_inertia_from_two_stage_planetary(
+    rotor_inertia: tuple[float, float, float], gear_ratio: tuple[float, float, float]
+) -> float:
+    """mjlab's ``mjlab.utils.actuator.reflected_inertia_from_two_stage_planetary``."""
+    assert gear_ratio[0] == 1
+    r1 = rotor_inertia[0] * (gear_ratio[1] * gear_ratio[2]) ** 2
+    r2 = rotor_inertia[1] * gear_ratio[2] ** 2
+    return r1 + r2 + rotor_inertia[2]
+
+
+# mjlab go2_constants.py (commit 3c5e2ea): ROTOR_INERTIA, HIP_GEAR_RATIO, KNEE_GEAR_RATIO, effort limits.
+GO2_ROTOR_INERTIA = 0.000111842
+GO2 = {"hip": (6, 23.7), "thigh": (6, 23.7), "calf": (6 * 1.5, 45.43)}
+
+# mjlab g1_constants.py (commit 0eda4e7): Unitree's rotor and stage inertias and stage ratios, effort limits.
+G1_MOTORS = {
+    "5020": ((0.139e-4, 0.017e-4, 0.169e-4), (1, 1 + (46 / 18), 1 + (56 / 16)), 25.0),
+    "7520_14": ((0.489e-4, 0.098e-4, 0.533e-4), (1, 4.5, 1 + (48 / 22)), 88.0),
+    "7520_22": ((0.489e-4, 0.109e-4, 0.738e-4), (1, 4.5, 5), 139.0),
+    "4010": ((0.068e-4, 0.0, 0.0), (1, 5, 5), 5.0),
+}
+G1_JOINTS = {  # mjlab's G1_ACTUATOR_* joint_names_expr (ankles and waist roll/pitch: a linkage, no motor here)
+    "left_hip_pitch_joint": "7520_14",
+    "right_hip_yaw_joint": "7520_14",
+    "waist_yaw_joint": "7520_14",
+    "left_hip_roll_joint": "7520_22",
+    "right_knee_joint": "7520_22",
+    "left_shoulder_pitch_joint": "5020",
+    "right_elbow_joint": "5020",
+    "left_wrist_roll_joint": "5020",
+    "right_wrist_pitch_joint": "4010",
+    "left_wrist_yaw_joint": "4010",
+}
+
+
+def test_the_catalogue_ships_at_least_twelve_motors_each_with_its_source() -> None:
+    assert len(SHIPPED) >= 12
+    for loaded in SHIPPED:
+        assert loaded.spec.source.strip(), loaded.source
+        text = loaded.document.path.read_text()  # type: ignore[union-attr]
+        assert text.count("\n#") >= 2, f"{loaded.source}: say where the values come from in a comment"
+
+
+def test_every_shipped_motor_is_found_by_name() -> None:
+    assert {loaded.spec.name for loaded in SHIPPED} <= set(MOTORS.names())
+
+
+@NEEDS_URDFS
+@pytest.mark.parametrize("part", sorted(GO2))
+def test_go2_with_its_shipped_motors_has_the_armature_and_effort_of_mjlab_go2(part: str) -> None:
+    base = registered_class("base", "Go2")(idn=0)
+    model = base.compile_alone()
+    ratio, effort = GO2[part]
+    for leg in ("FL", "FR", "RL", "RR"):
+        joint = model.joint(f"{base.naming_prefix}{leg}_{part}_joint")
+        assert joint.armature[0] == pytest.approx(reflected_inertia(GO2_ROTOR_INERTIA, ratio), rel=1e-12)
+        actuator = model.actuator(f"{base.naming_prefix}{leg}_{part}_joint")
+        assert actuator.forcerange.tolist() == pytest.approx([-effort, effort], rel=1e-12)
+
+
+@NEEDS_URDFS
+@pytest.mark.parametrize(("joint", "motor"), sorted(G1_JOINTS.items()))
+def test_g1_with_its_shipped_motors_has_the_armature_and_effort_of_mjlab_g1(joint: str, motor: str) -> None:
+    robot = robot_class("G1")(idn=0)
+    inertias, ratios, effort = G1_MOTORS[motor]
+    value = robot.joint_values[joint]["armature"]
+    assert value.value == pytest.approx(
+        reflected_inertia_from_two_stage_planetary(inertias, ratios), rel=1e-12
+    )
+    (record,) = [r for r in robot.actuator_table if r.joint == joint]
+    limit = dict(record.derivations)["forcerange"].value
+    assert limit == effort
