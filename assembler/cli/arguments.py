@@ -220,6 +220,19 @@ def _variants(parser: argparse.ArgumentParser) -> None:
         help="also keep each variant's compiled model in the cache "
         "(off: a sweep's models are rarely loaded again)",
     )
+    sharding = parser.add_mutually_exclusive_group()
+    sharding.add_argument(
+        "--shard",
+        metavar="I/N",
+        help="write only the I-th of N slices of the plan (same values and files as the whole run): "
+        "one task of a cluster array; then --merge N",
+    )
+    sharding.add_argument(
+        "--merge",
+        type=int,
+        metavar="N",
+        help="check that the N shards in the folder cover the plan exactly once and write its manifest",
+    )
 
 
 def _inspect(parser: argparse.ArgumentParser) -> None:

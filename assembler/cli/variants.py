@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from pathlib import Path
 from typing import Literal
 
@@ -11,7 +12,17 @@ from assembler.cli.common import gripper_choices, robot_name
 from assembler.files.paths import display_path
 from assembler.registry.lookup import robot_class
 from assembler.spec.part_arguments import DEFAULT, spec_file_path
-from assembler.worlds.variants import MANIFEST, Draw, Grid, VariantPlan, failures, write_variants
+from assembler.worlds.variants import (
+    MANIFEST,
+    Draw,
+    Grid,
+    Progress,
+    Shard,
+    VariantPlan,
+    failures,
+    merge_shards,
+    write_variants,
+)
 
 
 def plan_from(args: argparse.Namespace) -> VariantPlan:
@@ -42,11 +53,45 @@ def plan_from(args: argparse.Namespace) -> VariantPlan:
     )
 
 
+LARGE = 10_000
+"""From this many variants a run states its size first and reports progress as it goes."""
+
+PROGRESS_SECONDS = 5.0
+"""How often a long run says how far it is."""
+
+
+def _progress(robot: str) -> Progress:
+    """Say every few seconds how many of the run's variants are done (a long run is never silent)."""
+    said = time.monotonic()
+
+    def tell(done: int, count: int) -> None:
+        nonlocal said
+        now = time.monotonic()
+        if now - said >= PROGRESS_SECONDS and done < count:
+            said = now
+            print(f"variants of {robot}: {done:,} of {count:,} done ({done / count:.1%})", file=sys.stderr)
+
+    return tell
+
+
 def run(args: argparse.Namespace) -> int:
     plan = plan_from(args)
-    run = write_variants(plan, args.output)
-    manifest = display_path(Path(args.output) / MANIFEST)
     folder = display_path(args.output)
+    if args.merge is not None:
+        listed = merge_shards(plan, args.output, args.merge)
+        manifest = display_path(Path(args.output) / MANIFEST)
+        print(
+            f"merged {args.merge} shards of {plan.robot} in {folder}: {manifest} lists {listed}",
+            file=sys.stderr,
+        )
+        return 0
+    shard = Shard.parse(args.shard) if args.shard is not None else None
+    count = plan.size if shard is None else len(plan.shard(shard.number, shard.shards))
+    if plan.size >= LARGE:
+        part = "" if shard is None else f"; shard {shard.number}/{shard.shards}: {count:,} of them"
+        print(f"a plan of {plan.size:,} variants of {plan.robot}{part}", file=sys.stderr)
+    run = write_variants(plan, args.output, shard, _progress(plan.robot))
+    manifest = display_path(Path(args.output) / (MANIFEST if shard is None else shard.manifest_name))
     models = f"{run.distinct} distinct model{'s' if run.distinct != 1 else ''}"
     written = f"wrote {len(run.written)} of {len(run.results)} variants of {plan.robot}"
     print(f"{written} to {folder} ({manifest}): {models}", file=sys.stderr)  # as every command's "wrote"

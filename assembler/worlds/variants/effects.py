@@ -10,6 +10,7 @@ built: the first variant with only this field changed to another variant's value
 from __future__ import annotations
 
 import hashlib
+import json
 from collections.abc import Sequence
 from typing import Any
 
@@ -18,24 +19,28 @@ from assembler.worlds.variants.plan import VariantPlan
 from assembler.worlds.variants.run import VariantResult, variant_xml
 
 
-def _differs_only_in(a: dict[str, Any], b: dict[str, Any], key: str) -> bool:
-    return a[key] != b[key] and all(a[other] == b[other] for other in a if other != key)
+def _shown(value: Any) -> str:
+    """A value as a hashable, comparable key (grid values may be lists or mappings)."""
+    return json.dumps(value, sort_keys=True, default=str)
 
 
-def _has_effect(
-    plan: VariantPlan, written: Sequence[VariantResult], variants: list[dict[str, Any]], key: str
-) -> bool:
+def _has_effect(plan: VariantPlan, written: Sequence[VariantResult], key: str) -> bool:
+    """Whether ``key`` changed a written file: two written variants that differ in it alone differ in
+    bytes; where no such pair was written, one probe is built (``key`` set to another variant's value)."""
+    values = {result.index: plan.variant(result.index) for result in written}
     digests = {result.index: result.sha256 for result in written}
-    pairs = [
-        (i, j) for i in digests for j in digests if i < j and _differs_only_in(variants[i], variants[j], key)
-    ]
-    if pairs:
-        return any(digests[i] != digests[j] for i, j in pairs)
-    first = min(digests)
-    other = next((v for v in variants if v[key] != variants[first][key]), None)
+    alike: dict[str, dict[str, set[str | None]]] = {}  # the other fields -> this field's value -> digests
+    for index, variant in values.items():
+        others = _shown({other: value for other, value in variant.items() if other != key})
+        alike.setdefault(others, {}).setdefault(_shown(variant[key]), set()).add(digests[index])
+    groups = [by_value for by_value in alike.values() if len(by_value) > 1]
+    if groups:
+        return any(len(set().union(*by_value.values())) > 1 for by_value in groups)
+    first = min(values)
+    other = next((v for v in plan.variants() if v[key] != values[first][key]), None)
     if other is None:
         return False  # every value the same: nothing was varied
-    probe = {**variants[first], key: other[key]}
+    probe = {**values[first], key: other[key]}
     try:
         data = variant_xml(plan, probe).encode()
     except AssemblerError:
@@ -48,5 +53,4 @@ def fields_without_effect(plan: VariantPlan, results: Sequence[VariantResult]) -
     written = [result for result in results if result.file is not None]
     if not written:
         return []
-    variants = plan.variant_overrides()
-    return [key for key in plan.varied() if not _has_effect(plan, written, variants, key)]
+    return [key for key in plan.varied() if not _has_effect(plan, written, key)]

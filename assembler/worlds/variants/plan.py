@@ -7,7 +7,10 @@ run is reproducible whatever the number of worker processes.
 
 from __future__ import annotations
 
-import itertools
+import hashlib
+import json
+import math
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -126,17 +129,59 @@ class VariantPlan:
         """Variants per grid point."""
         return self.random or 1
 
+    @property
+    def size(self) -> int:
+        """How many variants the plan describes: every grid point times the draws at each."""
+        return math.prod(len(grid.values) for grid in self.grids) * self.count
+
+    def variant(self, index: int) -> dict[str, Any]:
+        """The overrides of variant ``index``: its grid point (the last grid varying fastest, as
+        ``itertools.product``) and, for draws, values from ``default_rng([seed, index])``. Each variant
+        is computed alone, so a shard or a huge plan never enumerates the others."""
+        if not 0 <= index < self.size:
+            raise IndexError(f"variant {index} of a plan of {self.size}")
+        point = index // self.count
+        values: dict[str, Any] = {}
+        for grid in reversed(self.grids):
+            point, position = divmod(point, len(grid.values))
+            values[grid.key] = grid.values[position]
+        chosen = {grid.key: values[grid.key] for grid in self.grids}
+        if self.draws:
+            rng = np.random.default_rng([self.seed, index])
+            chosen |= {draw.key: draw.sample(rng) for draw in self.draws}
+        return chosen
+
+    def variants(self, indices: Iterable[int] | None = None) -> Iterator[dict[str, Any]]:
+        """The overrides of the variants at ``indices`` (default: all, in index order), one at a time."""
+        for index in range(self.size) if indices is None else indices:
+            yield self.variant(index)
+
     def variant_overrides(self) -> list[dict[str, Any]]:
         """The overrides of every variant, in index order: grid points, then draws within each."""
-        keys = [grid.key for grid in self.grids]
-        variants: list[dict[str, Any]] = []
-        for point in itertools.product(*(grid.values for grid in self.grids)):
-            for _ in range(self.count):
-                rng = np.random.default_rng([self.seed, len(variants)])
-                variants.append(
-                    {**dict(zip(keys, point, strict=True)), **{d.key: d.sample(rng) for d in self.draws}}
-                )
-        return variants
+        return list(self.variants())
+
+    def shard(self, number: int, shards: int) -> range:
+        """The indices of shard ``number`` of ``shards`` (from 1): the plan cut into contiguous slices
+        whose sizes differ by one at most, disjoint, covering it exactly once."""
+        if not 1 <= number <= shards:
+            raise AssemblerError(f"--shard {number}/{shards}: expected I/N with 1 <= I <= N, e.g. 3/10")
+        return range((number - 1) * self.size // shards, number * self.size // shards)
+
+    def digest(self) -> str:
+        """What decides the variants' values and files (robot, parts, fixed and varied fields, seed),
+        hashed: shards of one plan carry the same digest, so a merge can tell them from another's."""
+        decided = {
+            "robot": self.robot,
+            "idn": self.idn,
+            "base": self.base,
+            "grippers": self.grippers,
+            "fixed": self.fixed,
+            "grids": [(grid.key, list(grid.values)) for grid in self.grids],
+            "draws": [(draw.key, draw.law, draw.a, draw.b) for draw in self.draws],
+            "random": self.random,
+            "seed": self.seed,
+        }
+        return hashlib.sha256(json.dumps(decided, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
     def flag_of(self, key: str) -> str:
         """The flag that varies ``key``: ``--grid``, ``--uniform`` or ``--normal``."""
@@ -156,4 +201,4 @@ class VariantPlan:
     def check(self) -> None:
         """The fixed overrides are valid and every varied path exists (one error before any work)."""
         cls = with_overrides(robot_class(self.robot), parse_overrides(self.fixed, "--set "))
-        check_override_paths(cls, self.overrides(self.variant_overrides()[0]))
+        check_override_paths(cls, self.overrides(self.variant(0)))

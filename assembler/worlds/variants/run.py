@@ -16,12 +16,13 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
+import itertools
 import json
 import os
 import signal
 import threading
 import time
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,8 +36,7 @@ from assembler.registry.instances import assemble
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import parse_overrides
 from assembler.worlds.variants.plan import VariantPlan
-
-MANIFEST = "manifest.jsonl"
+from assembler.worlds.variants.shards import MANIFEST, Shard
 
 ORPHAN_CHECK_SECONDS = 0.5
 """How often a worker looks whether the process that started it is still there."""
@@ -189,44 +189,74 @@ def _start_worker(spec_paths: Sequence[str], parent: int) -> None:
         register_specs(path)
 
 
-def _results(plan: VariantPlan, work: list[Job], workers: int) -> Iterator[VariantResult]:
+BLOCK = 4096
+"""Variants handed to the workers at a time: a huge plan is never enumerated whole, only this many
+variants' overrides exist at once (besides the results)."""
+
+
+def _results(plan: VariantPlan, work: Iterable[Job], count: int, workers: int) -> Iterator[VariantResult]:
     if workers <= 1:
         yield from map(_build, work)
         return
     pool = ProcessPoolExecutor(workers, initializer=_start_worker, initargs=(plan.spec_paths, os.getpid()))
+    chunksize = max(1, min(count, BLOCK) // (4 * workers))
     try:
-        yield from pool.map(_build, work, chunksize=max(1, len(work) // (4 * workers)))
+        for block in itertools.batched(work, BLOCK) if hasattr(itertools, "batched") else _batched(work):
+            yield from pool.map(_build, block, chunksize=chunksize)
     finally:  # interrupted: what has not started is dropped; what runs finishes its file whole
         pool.shutdown(wait=True, cancel_futures=True)
 
 
-def write_manifest(folder: Path, results: Sequence[VariantResult]) -> None:
+def _batched(work: Iterable[Job]) -> Iterator[tuple[Job, ...]]:
+    """``itertools.batched`` (Python 3.12) for 3.10 and 3.11."""
+    iterator = iter(work)
+    while block := tuple(itertools.islice(iterator, BLOCK)):
+        yield block
+
+
+def write_manifest(folder: Path, results: Sequence[VariantResult], name: str = MANIFEST) -> None:
     """The manifest of the written variants, in index order, written atomically."""
     lines = [
         result.manifest_line() for result in sorted(results, key=lambda r: r.index) if result.file is not None
     ]
-    write_atomically(folder / MANIFEST, "".join(line + "\n" for line in lines))
+    write_atomically(folder / name, "".join(line + "\n" for line in lines))
 
 
-def run_variants(plan: VariantPlan, folder: str | Path) -> list[VariantResult]:
-    """Build every variant into ``folder``; the manifest lists what was written, even when interrupted."""
+Progress = Callable[[int, int], None]
+"""Told ``(done, count)`` as a run goes on: variants finished so far (written or failed) of the run's."""
+
+
+def run_variants(
+    plan: VariantPlan,
+    folder: str | Path,
+    shard: Shard | None = None,
+    progress: Progress | None = None,
+) -> list[VariantResult]:
+    """Build every variant of ``plan`` (or of one ``shard`` of it) into ``folder``; the manifest lists
+    what was written, even when interrupted. A shard writes its own manifest and record
+    (:mod:`.shards`), so shards of one plan can share a folder; ``merge_shards`` makes the plan's."""
     plan.check()
     target = Path(folder)
     make_folder(target)
-    with cannot_write(target / MANIFEST):
-        (target / MANIFEST).unlink(missing_ok=True)  # the earlier run's: its files are about to change
-    variants = plan.variant_overrides()
-    workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(variants)))
+    manifest = MANIFEST if shard is None else shard.manifest_name
+    with cannot_write(target / manifest):
+        (target / manifest).unlink(missing_ok=True)  # the earlier run's: its files are about to change
+    indices = range(plan.size) if shard is None else plan.shard(shard.number, shard.shards)
+    workers = max(1, min(plan.jobs or os.cpu_count() or 1, len(indices)))
     if plan.jobs is None and edited_by_text(plan):
         workers = 1  # each variant costs milliseconds; a worker's own compile of the robot costs more
-    from_store = len(variants) < FROM_FILES_AT * workers
-    work = [(plan, index, variant, target, from_store) for index, variant in enumerate(variants)]
+    from_store = len(indices) < FROM_FILES_AT * workers
+    work = ((plan, index, plan.variant(index), target, from_store) for index in indices)
     results: list[VariantResult] = []
     try:
-        for result in _results(plan, work, workers):
+        for result in _results(plan, work, len(indices), workers):
             results.append(result)
+            if progress is not None:
+                progress(len(results), len(indices))
     finally:
-        write_manifest(target, results)
+        write_manifest(target, results, manifest)
+        if shard is not None:
+            shard.write_record(target, plan, indices, [r.index for r in results if r.file is None])
     return results
 
 
