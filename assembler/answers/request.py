@@ -20,6 +20,7 @@ import mujoco
 from assembler.answers.records import KeyedRequest, Origin, record
 from assembler.files.paths import shipped_specs_dir
 from assembler.models import REGISTRIES, PartModel, RobotModel
+from assembler.models.motor_table import MOTORS
 from assembler.registry.catalog import add_spec_folders, register_specs
 from assembler.registry.instances import assemble
 from assembler.spec.documents import Overrides
@@ -27,9 +28,12 @@ from assembler.spec.part_arguments import is_spec_file
 
 
 def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:
+    """The files a part was made from: its spec's (and its parents'), and the motor specs its
+    ``motors:`` entries name (a changed motor spec changes the part)."""
     loaded = getattr(cls, "loaded", None)
     document = getattr(loaded, "document", None)
-    return tuple(Origin(*origin) for origin in getattr(document, "origins", ()))
+    motors = MOTORS.origins([entry.motor for entry in cls.spec.motors]) if document is not None else ()
+    return tuple(Origin(*origin) for origin in (*getattr(document, "origins", ()), *motors))
 
 
 def _within(path: str, roots: Sequence[Path]) -> bool:
@@ -44,7 +48,8 @@ def _registry_within(roots: Sequence[Path]) -> bool:
             origins = _origins(cls)
             if not origins or not all(_within(origin.path, roots) for origin in origins):
                 return False
-    return True
+    motors = MOTORS.origins()  # a motor spec of a folder the request does not name: no record
+    return all(_within(origin[0], roots) for origin in motors)
 
 
 def record_answer(

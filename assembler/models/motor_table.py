@@ -55,14 +55,19 @@ class MotorTable:
             seen: dict[str, LoadedSpec[MotorSpec]] = {}
             for loaded in batch:
                 name = loaded.spec.name
-                earlier = seen.setdefault(name, self._specs.get(name, loaded))
+                held = self._specs.get(name)
+                if held is not None and held.source == loaded.source:
+                    held = None  # the same file read again (edited or not): the new reading wins
+                earlier = seen.setdefault(name, held or loaded)
                 if earlier is not loaded and earlier.spec != loaded.spec:
                     message = f"motor '{name}' is also defined by {earlier.source}; rename one"
                     problems.append(loaded.problem(NAME, message))
             if problems:
                 raise RegistryError(problems)
             for loaded in batch:
-                self._specs.setdefault(loaded.spec.name, loaded)
+                held = self._specs.get(loaded.spec.name)
+                if held is None or held.source == loaded.source:
+                    self._specs[loaded.spec.name] = loaded
 
     def names(self) -> list[str]:
         """Every motor's name, sorted."""
@@ -98,6 +103,13 @@ class MotorTable:
             except RegistryError:
                 continue
         return found
+
+    def origins(self, names: Sequence[str] | None = None) -> tuple[tuple[str, int, int], ...]:
+        """(file, size, mtime_ns when read) of the motor specs ``names`` name (unknown names left
+        out), or of every motor spec held: what a recorded answer must see unchanged."""
+        with self._lock:
+            held = self._specs if names is None else {n: self._specs[n] for n in names if n in self._specs}
+            return tuple(origin for loaded in held.values() for origin in loaded.document.origins)
 
     @contextlib.contextmanager
     def transaction(self) -> Iterator[None]:
