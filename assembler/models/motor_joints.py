@@ -53,11 +53,16 @@ def _control_problem(drive: Drive) -> str | None:
 
 
 def motor_drives(
-    mjspec: mujoco.MjSpec, entries: Sequence[JointMotor], problem: SpecProblem
+    mjspec: mujoco.MjSpec,
+    entries: Sequence[JointMotor],
+    problem: SpecProblem,
+    names: Sequence[str] | None = None,
 ) -> tuple[dict[str, Drive], list[Problem]]:
-    """Joint -> the drive of the last entry matching it (in joint order); every problem of the entries."""
-    joints = [j for j in mjspec.joints if j.type != mujoco.mjtJoint.mjJNT_FREE]
-    names = [j.name for j in joints]
+    """Joint -> the drive of the last entry matching it (in joint order); every problem of the entries.
+    ``names``: the joints to match (default: ``mjspec``'s, free joints excluded); a joint ``mjspec``
+    lacks (one the spec adds) is taken as a hinge or slide."""
+    if names is None:
+        names = [j.name for j in mjspec.joints if j.type != mujoco.mjtJoint.mjJNT_FREE]
     skipped = followers(mjspec)
     problems: list[Problem] = []
     chosen: dict[str, Drive] = {}
@@ -79,7 +84,8 @@ def motor_drives(
         if not matched:
             problems.append(problem(here.child("match"), no_match(entry.match, names)))
         for name in matched:
-            if mjspec.joint(name).type not in MOVING:
+            joint = mjspec.joint(name)
+            if joint is not None and joint.type not in MOVING:
                 message = f"joint '{name}' is a ball joint; a motor drives a hinge or a slide joint"
                 problems.append(problem(here.child("match"), message))
             chosen[name] = drive

@@ -122,7 +122,8 @@ def add_contact_excludes(spec: PartSpec, mjspec: mujoco.MjSpec, problem: SpecPro
 
 
 def joint_table(spec: PartSpec, source: MjcfSource, kept: list[str], problem: SpecProblem) -> JointTable:
-    """Every joint parameter of the kept joints, with its source."""
+    """Every joint parameter of the kept joints, with its source: the file's, the rules', the spec's
+    ``joints:`` and added joints', then the motors' (:mod:`assembler.models.motor_joints`)."""
     # Rules index over every joint of the file, before removals (robosuite applies its defaults
     # before removing actuation, so GR1ArmsOnly keeps the armature of its original indices).
     names = source.joint_names
@@ -136,6 +137,11 @@ def joint_table(spec: PartSpec, source: MjcfSource, kept: list[str], problem: Sp
         origin = Provenance("added", index=index)
         table[added.name] = {a: JointValue(float(getattr(added, a)), origin) for a in JOINT_RULE_ATTRIBUTES}
     apply_joint_overrides(table, kept, spec.joints, problem)
+    if spec.motors:  # the motors' values last: they yield only to the spec's own word for a joint
+        drives, problems = motor_drives(source.pristine, spec.motors, problem, kept)
+        if problems:
+            raise SpecError(problems)
+        apply_motor_values(table, drives)
     return table
 
 
@@ -175,9 +181,8 @@ def prepare(spec: PartSpec, source: MjcfSource, problem: SpecProblem) -> tuple[P
         problems += error.problems
         table = {}
     drives, motor_problems = motor_drives(mjspec, spec.motors, problem)
-    problems += motor_problems
+    problems += [p for p in motor_problems if p not in problems]  # joint_table reports them too
     if drives and not motor_problems:
-        apply_motor_values(table, drives)
         actuators, motor_problems = add_motor_actuators(mjspec, actuators, drives, problem)
         problems += motor_problems
     return PreparedPart(source, mjspec, root, kept, table, actuators, physical), problems
