@@ -31,6 +31,7 @@ from pathlib import Path
 from assembler.cache.dependencies import Recorder
 from assembler.cache.file_state import FileState, buffer_digest, check_all, file_digest
 from assembler.files.cache_location import cache_dir, cache_disabled, scratch_dir
+from assembler.files.regular import read_regular
 
 CONVERTED = "converted-meshes"
 """Meshes converted to OBJ (and renamed copies), below the cache folder."""
@@ -143,7 +144,7 @@ def recorded_text_file(
     the part was made) with their (size, mtime_ns) then, a change since then being a change."""
     record = folder / f"record-{key}.json"
     with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
-        data = json.loads(record.read_text(encoding="utf-8"))
+        data = json.loads(read_regular(record).decode("utf-8"))
         states = [FileState(**state) for state in data["read"]]
         target = folder / str(data["file"])
         if target.parent == folder and check_all(states) is not None and target.exists() and _whole(target):

@@ -25,6 +25,8 @@ from dataclasses import dataclass, replace
 
 import xxhash
 
+from assembler.files.regular import open_regular
+
 DIGEST = "xxh3_128"
 """The hash of every file content the cache compares. XXH3 rather than a cryptographic hash: it is
 there to catch a changed or damaged file (any change of any byte), not a forger (a writer of the
@@ -49,7 +51,7 @@ def buffer_digest(data: object) -> str:
 def file_digest(path: str | os.PathLike[str]) -> str:
     """The :data:`DIGEST` of a file's whole content, in hex; raises OSError."""
     digest = xxhash.xxh3_128()
-    with open(path, "rb") as stream:
+    with open_regular(path) as stream:  # a FIFO put in a file's place: an error, not a wait
         while chunk := stream.read(_CHUNK):
             digest.update(chunk)
     return digest.hexdigest()

@@ -39,6 +39,7 @@ from assembler.cache.file_state import Stat, file_digest, settled, stat_of
 from assembler.cache.folder import GRACE_SECONDS, MESH_FILE
 from assembler.cache.folder import evict as evict_folder
 from assembler.files.cache_location import cache_dir, cache_disabled, max_bytes
+from assembler.files.regular import open_regular, read_regular
 
 FORMAT = 2
 """Version of the entry and record layout; part of every key."""
@@ -95,7 +96,7 @@ class MeshStore:
         """The digest recorded for ``path`` if its stat is still ``stat``; None otherwise."""
         name = self._record_name(path)
         try:
-            record = json.loads((self.directory / name).read_bytes())
+            record = json.loads(read_regular(self.directory / name))
             fields = [record["path"], *record["stat"], record["digest"]]
             valid = record["check"] == _check(json.dumps(fields).encode()).hex()
         except (OSError, ValueError, KeyError, TypeError):
@@ -147,7 +148,7 @@ class MeshStore:
         key = self.key(kind, digest)
         name = f"{size}-{key}.msh"
         try:
-            with open(self.directory / name, "rb") as stream:
+            with open_regular(self.directory / name) as stream:
                 head = stream.read(len(MAGIC) + CHECK_BYTES)
                 payload = stream.read()
         except OSError:

@@ -37,6 +37,7 @@ from assembler.cache.dependencies import Dependency, verify
 from assembler.cache.key import code_fingerprint, resolution_environment
 from assembler.files.cache_location import cache_dir
 from assembler.files.inputs import note_inputs
+from assembler.files.regular import read_regular
 
 FORMAT = 1
 """Version of the record layout and of the request key's contents."""
@@ -152,7 +153,7 @@ class RequestStore:
         """The record of ``key``, if every spec file and folder it lists is unchanged."""
         path = self._path(key)
         try:
-            record = RequestRecord.from_json(path.read_text(encoding="utf-8"))
+            record = RequestRecord.from_json(read_regular(path).decode("utf-8"))
         except (OSError, UnicodeDecodeError):
             return None
         except ValueError:

@@ -35,6 +35,7 @@ from assembler.cache.file_state import buffer_digest
 from assembler.cache.folder import GRACE_SECONDS, MODEL_FILE
 from assembler.cache.folder import evict as evict_folder
 from assembler.files.inputs import note_inputs
+from assembler.files.regular import open_regular, read_regular
 from assembler.mjcf import mujoco_warnings
 
 TEMP_SUFFIX = ".tmp"
@@ -107,7 +108,7 @@ class ModelStore:
 
     def _read_entry(self, key: str) -> Entry | None:
         try:
-            text = (self.directory / (key + MANIFEST_SUFFIX)).read_text(encoding="utf-8")
+            text = read_regular(self.directory / (key + MANIFEST_SUFFIX)).decode("utf-8")
         except (OSError, UnicodeDecodeError):
             return None
         try:
@@ -126,7 +127,7 @@ class ModelStore:
         loads it without a warning. MuJoCo never sees a file whose digest differs."""
         path = self.directory / entry.model
         try:
-            with open(path, "rb") as stream:
+            with open_regular(path) as stream:  # a FIFO planted there is a miss, not a wait
                 if os.fstat(stream.fileno()).st_size != entry.model_bytes:
                     return None
                 with mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ) as content:
@@ -168,7 +169,7 @@ class ModelStore:
             return None
         note_inputs(state.path for state in current)
         try:
-            data = (self.directory / entry.xml).read_bytes()
+            data = read_regular(self.directory / entry.xml)
             if len(data) == entry.xml_bytes and buffer_digest(data) == entry.xml_digest:
                 with contextlib.suppress(OSError):
                     self._touch(entry.manifest)

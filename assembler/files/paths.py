@@ -23,6 +23,7 @@ from pathlib import Path
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError, SpecError
 from assembler.files.extras import install_hint
 from assembler.files.inputs import note_resolution
+from assembler.files.regular import not_regular
 from assembler.files.repositories import MARKER, find_repository, git_top
 from assembler.files.variables import restored_after
 
@@ -271,5 +272,8 @@ def locate_model_file(reference: str) -> Path:
         path = Path(reference)  # admitted when its spec was loaded; checked again, it may be a link now
         path = confine(path, homes_of(path.resolve()), "", MjcfError)
     if not is_file(path):
+        kind = not_regular(path)
+        if kind is not None:  # a FIFO, a device or a folder is there: say what it is
+            raise MjcfError(f"{display_path(path)}: {kind}")
         raise MjcfError(f"MJCF file not found: {display_path(path)}")
     return path

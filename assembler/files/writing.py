@@ -30,6 +30,7 @@ from typing import BinaryIO
 from assembler.errors import AssemblerError
 from assembler.files.inputs import input_at
 from assembler.files.paths import display_path
+from assembler.files.regular import kind_problem
 
 TEMPORARY_NAME_STEM = 64
 """Characters of the target's name kept in its temporary file's name: any name legal for the
@@ -74,14 +75,6 @@ def cannot_write(path: Path) -> Iterator[None]:
         raise AssemblerError(f"cannot write {shown(path)}: {reason}") from None
 
 
-_KINDS = (
-    (stat.S_ISCHR, "a character device"),
-    (stat.S_ISBLK, "a block device"),
-    (stat.S_ISFIFO, "a FIFO (named pipe)"),
-    (stat.S_ISSOCK, "a socket"),
-)
-
-
 def check_target(path: Path) -> None:
     """Stop unless ``path`` may be replaced by an output: nothing is there, or a regular file that is
     no input of this process's build. A folder is left to the write itself (``Is a directory``)."""
@@ -94,12 +87,11 @@ def check_target(path: Path) -> None:
             f"cannot write {shown(path)}: it is a symbolic link (to {os.readlink(path)}); an output "
             "replaces only a regular file: remove the link or choose another path"
         )
-    for test, kind in _KINDS:
-        if test(found.st_mode):
-            raise AssemblerError(
-                f"cannot write {shown(path)}: it is {kind}, not a regular file; an output replaces only a "
-                "regular file: choose another path"
-            )
+    kind = None if stat.S_ISDIR(found.st_mode) else kind_problem(found.st_mode)
+    if kind is not None:
+        raise AssemblerError(
+            f"cannot write {shown(path)}: {kind}; an output replaces only a regular file: choose another path"
+        )
     source = input_at(path)
     if source is not None:
         raise AssemblerError(

@@ -23,7 +23,13 @@ from assembler.importers.decisions import gripper_entries, robot_entries
 from assembler.importers.entries import Entry, spec_text
 from assembler.importers.naming import camel_case, free_name, name_source
 from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside
-from assembler.importers.reading import ModelFile, file_format, read_model_file, spec_reference
+from assembler.importers.reading import (
+    ModelFile,
+    check_model_path,
+    file_format,
+    read_model_file,
+    spec_reference,
+)
 from assembler.importers.robosuite_names import robosuite_names
 from assembler.importers.scene import scene_cut, scene_entry
 from assembler.importers.tree import read_tree
@@ -106,9 +112,8 @@ def _below(path: Path, folder: Path) -> bool:
 def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> NewSpec:
     """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
     are relative to its folder); ``kind`` robot or gripper, guessed when None."""
-    packages = (
-        packages_beside(model_path.resolve(), spec_path.parent) if file_format(model_path) == "urdf" else []
-    )
+    resolved = check_model_path(model_path)  # before the URDF's packages are looked for in it
+    packages = packages_beside(resolved, spec_path.parent) if file_format(model_path) == "urdf" else []
     with found_packages(packages):
         file = read_model_file(model_path)
     cut = None

@@ -29,6 +29,7 @@ from typing import Literal
 
 from assembler.files.limits import MAX_MJCF_BYTES
 from assembler.files.paths import display_path
+from assembler.files.regular import open_regular
 from assembler.files.repositories import MARKER, find_repository
 from assembler.files.variables import restored_after
 from assembler.importers.reading import python_package_reference
@@ -61,7 +62,7 @@ class BesidePackage:
 
 def _named(urdf: Path) -> dict[str, list[str]]:
     """Package name -> the paths inside it that the URDF names."""
-    with urdf.open("rb") as stream:  # bounded: the reader refuses a larger file with its own line
+    with open_regular(urdf) as stream:  # bounded: the reader refuses a larger file with its own line
         text = stream.read(MAX_MJCF_BYTES).decode("utf-8", errors="replace")
     named: dict[str, list[str]] = {}
     for uri in PACKAGE_URI.findall(text):

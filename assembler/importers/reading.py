@@ -15,7 +15,8 @@ from typing import Literal
 import mujoco
 
 from assembler.errors import MjcfError
-from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, package_root
+from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, is_file, package_root
+from assembler.files.regular import not_regular
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
@@ -90,12 +91,22 @@ def _read(
     return balanced, _compile(balanced, shown), True
 
 
+def check_model_path(path: Path) -> Path:
+    """``path`` resolved, if it is a file; :class:`MjcfError` saying what it is otherwise (missing,
+    a folder, a FIFO, a device), before anything reads it."""
+    kind = not_regular(path)
+    if kind is not None:
+        raise MjcfError(f"{display_path(path)}: {kind}; give an MJCF (.xml) or URDF (.urdf) file")
+    resolved = path.resolve()
+    if not is_file(resolved):
+        raise MjcfError(f"{display_path(resolved)}: no such file; give an MJCF (.xml) or URDF (.urdf) file")
+    return resolved
+
+
 def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
     """The MJCF or URDF at ``path``, read as a spec naming it would read it (its own folder allowed
     when it is no package's; an MJCF repaired by ``fixes``), and compiled."""
-    path = path.resolve()
-    if not path.is_file():
-        raise MjcfError(f"{display_path(path)}: no such file; give an MJCF (.xml) or URDF (.urdf) file")
+    path = check_model_path(path)
     fmt = file_format(path)
     package = python_package_reference(path)
     reference = package or str(path)

@@ -24,6 +24,7 @@ from pydantic import TypeAdapter
 from assembler.errors import MjcfError, Problem
 from assembler.files.inputs import note_inputs
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
+from assembler.files.regular import not_regular
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.asset_names import name_assets_after_files
@@ -211,6 +212,9 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     name_assets_after_files(spec)  # before attaching prefixes the names: MuJoCo derives them at compile
     missing = _absolutize_assets(spec, path.parent, homes)
     if missing:
+        kind = not_regular(missing[0])  # a FIFO, a device or a folder is there: say what it is
+        if kind is not None:
+            raise MjcfError(f"{shown}: asset file {display_path(missing[0])}: {kind}")
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
     spec = settle_default_site_materials(spec)
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.

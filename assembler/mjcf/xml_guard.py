@@ -23,6 +23,7 @@ from assembler.errors import MjcfError
 from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
 from assembler.files.paths import confine, display_path
+from assembler.files.regular import open_regular
 
 FILE_ELEMENTS: tuple[str, ...] = ("include", "model", "flexcomp")
 """Elements whose ``file`` MuJoCo reads while parsing the XML (meshes and textures are read at
@@ -39,7 +40,7 @@ class _Refused(Exception):
 def _read(path: Path) -> bytes:
     shown = display_path(path)
     try:
-        with path.open("rb") as stream:
+        with open_regular(path) as stream:
             data = stream.read(MAX_MJCF_BYTES + 1)
     except OSError as error:
         raise MjcfError(f"{shown}: cannot read the file: {error.strerror}") from None

@@ -14,6 +14,7 @@ import hashlib
 from typing import Any
 
 from assembler.files.paths import PACKAGE_SCHEME, shipped_specs_dir
+from assembler.files.regular import open_regular
 from assembler.spec.documents import LoadedSpec
 
 _MJCF = "mjcf"
@@ -24,7 +25,7 @@ def _content(reference: Any) -> Any:
     if not isinstance(reference, str) or reference.startswith(PACKAGE_SCHEME):
         return reference
     try:
-        with open(reference, "rb") as stream:
+        with open_regular(reference) as stream:
             return "sha256:" + hashlib.sha256(stream.read()).hexdigest()
     except (OSError, ValueError):  # not there (yet): compare the paths
         return reference

@@ -38,6 +38,7 @@ from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_DAE_BYTES
 from assembler.files.paths import confine, display_path
 from assembler.files.plain_xml import check_plain_xml
+from assembler.files.regular import open_regular
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
 """Mesh formats MuJoCo reads itself."""
@@ -102,7 +103,7 @@ def needs_conversion(path: Path) -> bool:
 def _read_dae(source: Path) -> bytes:
     """The COLLADA file's bytes, read once and bounded; an archive or a DTD is refused."""
     try:
-        with source.open("rb") as stream:
+        with open_regular(source) as stream:
             data = stream.read(MAX_DAE_BYTES + 1)
     except OSError as error:
         raise MeshConversionError(

@@ -18,6 +18,7 @@ import numpy as np
 from assembler.compiler.compile import compile_home
 from assembler.errors import AssemblerError, Problem, SpecError
 from assembler.files.paths import confine, spec_homes
+from assembler.files.regular import not_regular
 from assembler.mjcf import census, compose
 from assembler.models import RobotModel
 from assembler.registry.catalog import register_specs
@@ -63,7 +64,11 @@ def robot_reference(reference: str, folder: Path | None = None) -> str:
     if is_spec_file(reference, folder or Path.cwd()):
         home = folder or Path.cwd()
         # A scene or experiment from a stranger names robot files as a spec names its parents.
-        (cls,) = register_specs(confine(home / reference, spec_homes(home), "robot spec "))
+        path = confine(home / reference, spec_homes(home), "robot spec ")
+        kind = not_regular(path)
+        if kind is not None:  # a folder would register every spec in it
+            raise SpecError(f"robot spec {reference}: {kind}; name the robot's spec file")
+        (cls,) = register_specs(path)
         return cls.__name__
     return reference
 

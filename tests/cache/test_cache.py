@@ -480,3 +480,24 @@ def test_the_same_spec_in_another_environment_has_its_own_entry(tmp_path: Path, 
         )
         sizes.append(float(done.stdout.split()[-1]))
     assert sizes == [0.3, 0.9]
+
+
+LOAD = "import assembler; print(assembler.load_model('Sparrow7').njnt, assembler.assemble('Sparrow7').get_xml()[:7])"
+
+
+@pytest.mark.parametrize(
+    "pattern", ["*.mjb", "*.json", "*.xml", "requests/*.json", "**/*"], ids=lambda p: p.replace("*", "any")
+)
+def test_a_fifo_in_place_of_a_cache_file_is_a_miss_not_a_wait(pattern: str, private_cache: Path) -> None:
+    """Opening a FIFO waits for a writer: a cache file replaced by one would hang every build."""
+    environment = {**os.environ, "ASSEMBLER_CACHE_DIR": str(private_cache)}
+    run = [sys.executable, "-c", LOAD]
+    first = subprocess.run(run, capture_output=True, text=True, env=environment, timeout=300)
+    assert first.stdout == "9 <mujoco\n", first.stderr
+    replaced = [path for path in private_cache.glob(pattern) if path.is_file()]
+    assert replaced
+    for path in replaced:
+        path.unlink()
+        os.mkfifo(path)
+    again = subprocess.run(run, capture_output=True, text=True, env=environment, timeout=120)
+    assert (again.returncode, again.stdout, again.stderr) == (0, "9 <mujoco\n", "")

@@ -7,6 +7,7 @@ line, never a traceback and never a crash later inside MuJoCo.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import mujoco
@@ -159,3 +160,68 @@ def test_scene_and_experiment_files_get_the_spec_file_rules(
         assert main([command, str(file)]) == 1
         err = capsys.readouterr().err
         assert expected in err and "Traceback" not in err, err
+
+
+FIFO = "it is a FIFO (named pipe), not a regular file"
+FOLDER = "it is a folder, not a file"
+DEVICE = "it is a character device, not a regular file"
+NEW_HINT = "; give an MJCF (.xml) or URDF (.urdf) file"
+MESH_MJCF = TWO_LINK_MJCF.replace("<worldbody>", '<asset><mesh name="x" file="x.obj"/></asset><worldbody>')
+
+
+def _fifo(path: Path) -> None:
+    os.mkfifo(path)
+
+
+def _folder_at(path: Path) -> None:
+    path.mkdir()
+
+
+def _device(path: Path) -> None:
+    path.symlink_to(os.devnull)
+
+
+KINDS = {"fifo": (_fifo, FIFO), "folder": (_folder_at, FOLDER), "device": (_device, DEVICE)}
+
+# The kind of thing put at x.*, the command, and the line it prints.
+# fmt: off
+NOT_FILES = [
+    ("fifo", ["build", "x.yaml"], "x.yaml: cannot read the file: {kind}"),
+    ("device", ["build", "x.yaml"], "x.yaml: cannot read the file: {kind}"),
+    ("fifo", ["build", "mjcf.yaml"], "mjcf.yaml:2:7: mjcf: x.xml: {kind}"),
+    ("folder", ["build", "mjcf.yaml"], "mjcf.yaml:2:7: mjcf: x.xml: {kind}"),
+    ("fifo", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
+    ("folder", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
+    ("fifo", ["build", "mesh.yaml"], "mesh.yaml:2:7: mjcf: mesh.xml: asset file x.obj: {kind}"),
+    ("folder", ["build", "mesh.yaml"], "mesh.yaml:2:7: mjcf: mesh.xml: asset file x.obj: {kind}"),
+    *[(kind, ["new", f"x.{suffix}"], f"x.{suffix}: {{kind}}{NEW_HINT}") for kind in KINDS for suffix in ("xml", "urdf")],
+    *[(kind, [command, "x.yaml"], "x.yaml: cannot read the file: {kind}") for kind in KINDS for command in ("scene", "experiment", "validate") if (command, kind) != ("validate", "folder")],  # validate reads a folder's specs
+    ("fifo", ["scene", "scene.yaml"], "scene.yaml:4:5: robots[0]: robot spec x.yaml: {kind}; name the robot's spec file"),
+    ("folder", ["scene", "scene.yaml"], "scene.yaml:4:5: robots[0]: robot spec x.yaml: {kind}; name the robot's spec file"),
+]
+# fmt: on
+
+
+@pytest.mark.parametrize(
+    ("kind", "words", "expected"), NOT_FILES, ids=[f"{k}-for-{w[0]}-{w[1]}" for k, w, _ in NOT_FILES]
+)
+def test_a_fifo_folder_or_device_for_a_file_says_what_it_is(
+    kind: str,
+    words: list[str],
+    expected: str,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Before, a FIFO hung the command, a folder or a device was 'not found' (or a traceback)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "mjcf.yaml").write_text("name: Arm\nmjcf: x.xml\n")
+    (tmp_path / "urdf.yaml").write_text("name: Arm\nurdf: x.urdf\n")
+    (tmp_path / "mesh.yaml").write_text("name: Arm\nmjcf: mesh.xml\n")
+    (tmp_path / "mesh.xml").write_text(MESH_MJCF)
+    (tmp_path / "scene.yaml").write_text("kind: scene\nname: S\nrobots:\n  - robot: x.yaml\n")
+    make, text = KINDS[kind]
+    for target in ["x.xml", "x.urdf", "x.obj", "x.yaml"]:
+        make(tmp_path / target)
+    assert main(words) == 1
+    assert capsys.readouterr().err == expected.format(kind=text) + "\n"

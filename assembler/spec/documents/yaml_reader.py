@@ -19,6 +19,7 @@ import yaml
 from assembler.errors import Location, Problem, SpecError
 from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
+from assembler.files.regular import open_regular
 from assembler.spec.documents.located import LocatedDocument
 from assembler.spec.fieldpath import TOP, FieldPath
 
@@ -177,7 +178,7 @@ def read_yaml_text(path: Path, shown: str) -> str:
     """A YAML file's text: at most :data:`MAX_SPEC_BYTES` read, UTF-8 with or without a BOM; the file
     is noted as an input, which no output of this process may replace (:mod:`assembler.files.inputs`)."""
     try:
-        with path.open("rb") as stream:
+        with open_regular(path) as stream:  # a FIFO or a device is refused, never waited on
             raw = stream.read(MAX_SPEC_BYTES + 1)
     except OSError as error:
         raise SpecError(Problem(f"cannot read the file: {error.strerror}", Location(shown))) from None
