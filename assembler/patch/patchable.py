@@ -28,6 +28,16 @@ PATCHABLE: dict[str, tuple[str, ...]] = {
     "joints[i].stiffness": ("jnt_stiffness",),
     "actuators[i].kp, kv, dampratio, gainprm, biasprm": ("actuator_gainprm", "actuator_biasprm"),
     "actuators[i].gear": ("actuator_gear",),
+    "motors[i].gear_ratio, efficiency (the joint values and actuator they give)": (
+        "dof_armature",
+        "dof_frictionloss",
+        "dof_damping",
+        "actuator_gainprm",
+        "actuator_biasprm",
+        "actuator_gear",
+        "actuator_ctrlrange",
+        "actuator_forcerange",
+    ),
     "actuators[i].ctrlrange, forcerange (once set)": ("actuator_ctrlrange", "actuator_forcerange"),
     "bodies[i].mass_scale": ("body_mass", "body_inertia"),
     "bodies[i].size_scale (bodies without mesh geoms)": (
@@ -75,7 +85,9 @@ STRUCTURAL = (
 )
 """What a patch never changes: a variant that changes any of these is compiled."""
 
-PATCHED_SECTIONS = frozenset({"joint_defaults", "joints", "actuators", "bodies", "geoms", "init_qpos"})
+PATCHED_SECTIONS = frozenset(
+    {"joint_defaults", "joints", "actuators", "motors", "bodies", "geoms", "init_qpos"}
+)
 """Top-level spec fields whose effects :func:`model_patch` resolves; a change elsewhere is structural."""
 
 ACTUATOR_VALUES: tuple[tuple[str, str], ...] = (

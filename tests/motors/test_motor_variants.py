@@ -56,3 +56,33 @@ def test_a_patched_variant_of_a_motor_driven_robot_equals_its_full_compile(
         "actuator_gainprm",
     ):
         assert np.allclose(getattr(patched, field), getattr(compiled, field), rtol=1e-12, atol=0), field
+
+
+MOTOR_CASES: list[tuple[str, dict[str, Any]]] = [
+    ("torque", {"motors[0].gear_ratio": 36}),
+    ("position, kp: 40, dampratio: 1", {"motors[0].gear_ratio": 20, "motors[0].efficiency": 0.7}),
+    ("voltage", {"motors[0].gear_ratio": 25}),
+    ("voltage, voltage_actuator: general", {"motors[0].efficiency": 0.6}),
+]
+
+
+@pytest.mark.parametrize(("control", "overrides"), MOTOR_CASES, ids=[c for c, _ in MOTOR_CASES])
+def test_a_variant_of_a_motor_gearbox_is_patched_and_equals_its_full_compile(
+    write: Write, control: str, overrides: dict[str, Any]
+) -> None:
+    write("m/twolink.xml", TWO_LINK_MJCF)
+    robot = ROBOT.replace("control: torque", f"control: {control}")
+    assembler.register_specs(write("m/motor.yaml", motor_yaml()), write("m/robot.yaml", robot))
+    base = assembler.assemble("MotorArm")
+    model = base.get_model(cache=False, store=False)
+    compiled = assembler.assemble("MotorArm", overrides=overrides).get_model(cache=False, store=False)
+    resolved = Resolved.of(base)
+    patch = model_patch(model, resolved, resolve_variant(base, resolved, parse_overrides(overrides)))
+    patched = copy.copy(model)
+    apply_patch(patched, patch)
+    assert patch.fields, "the variant changed nothing"
+    for name in dir(compiled):
+        theirs = getattr(compiled, name, None)
+        if isinstance(theirs, np.ndarray) and theirs.dtype != object:
+            ours = getattr(patched, name)
+            assert np.allclose(ours, theirs, rtol=1e-10, atol=1e-12, equal_nan=True), name
