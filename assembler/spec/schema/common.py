@@ -2,20 +2,32 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field
 from pydantic_core import PydanticCustomError
 
-FiniteFloat = Annotated[float, Field(allow_inf_nan=False)]
-"""A real number; NaN and infinities are refused at validation."""
+
+def _refuse_bool(value: Any) -> Any:
+    if isinstance(value, bool):  # pydantic would read true as 1.0: ``damping: true`` is a mistake
+        raise PydanticCustomError(
+            "number_type", "expected a number, got {value}", {"value": str(value).lower()}
+        )
+    return value
+
+
+NOT_BOOL = BeforeValidator(_refuse_bool)
+"""Put in a number type's ``Annotated``: ``true`` and ``false`` are refused, not read as 1 and 0."""
+
+FiniteFloat = Annotated[float, NOT_BOOL, Field(allow_inf_nan=False)]
+"""A real number; NaN, infinities and booleans are refused at validation."""
 
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
 
 Name = Annotated[str, Field(pattern=NAME_PATTERN, max_length=64)]
 """A registry name: it becomes a Python class name, so letters, digits and underscores."""
 
-NonNegativeFloat = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
+NonNegativeFloat = Annotated[float, NOT_BOOL, Field(ge=0.0, allow_inf_nan=False)]
 """A finite number that is zero or larger."""
 
 
