@@ -41,12 +41,12 @@ def _control_problem(drive: Drive) -> str | None:
     name, control = drive.motor.name, drive.entry.control
     if control == "voltage" and drive.voltage_model() is None:
         return (
-            f"control: voltage needs the motor's voltage, torque_constant and resistance (or voltage, "
+            f"voltage control needs the motor's voltage, torque_constant and resistance (or voltage, "
             f"stall_torque and no_load_speed); motor '{name}' does not give them"
         )
     if control in ("torque", "position") and drive.torque_limit() is None:
         return (
-            f"control: {control} needs a torque limit: motor '{name}' gives no peak_torque, stall_torque, "
+            f"{control} control needs a torque limit: motor '{name}' gives no peak_torque, stall_torque, "
             "nor voltage, torque_constant and resistance; add them, or use control: null"
         )
     return None

@@ -71,7 +71,7 @@ def test_voltage_control_without_the_motor_constants_says_what_is_missing(write:
     robot = motor_robot(write, "{match: spin, motor: TestMotor, control: voltage}", motor)
     with pytest.raises(
         AssemblerError,
-        match=r"motors\[0\]\.control: control: voltage needs the motor's voltage, "
+        match=r"motors\[0\]\.control: voltage control needs the motor's voltage, "
         r"torque_constant and resistance \(or voltage, stall_torque and no_load_speed\)",
     ):
         robot.get_model()
@@ -85,3 +85,15 @@ def test_gains_of_a_position_servo_on_a_torque_motor_are_refused(write: Write) -
         r"control is torque$",
     ):
         motor_robot(write, robot_text)
+
+
+def test_torque_control_without_any_torque_rating_says_what_to_add(write: Write) -> None:
+    motor = motor_yaml(torque_constant=None, resistance=None)
+    robot = motor_robot(write, "{match: spin, motor: TestMotor, control: torque}", motor)
+    with pytest.raises(
+        AssemblerError,
+        match=r"robot\.yaml:4:46: motors\[0\]\.control: torque control needs a torque limit: motor 'TestMotor' "
+        r"gives no peak_torque, stall_torque, nor voltage, torque_constant and resistance; add them, or use "
+        r"control: null$",
+    ):
+        robot.get_model()
