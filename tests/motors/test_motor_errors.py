@@ -16,6 +16,7 @@ BAD_MOTORS = [
         r"^\S+motor\.yaml:7:16: rotor_inertia: Input should be greater than or equal to 0$",
     ),
     ({"resistance": 0}, r"^\S+motor\.yaml:6:13: resistance: Input should be greater than 0$"),
+    ({"voltage": "true"}, r"^\S+motor\.yaml:4:10: voltage: expected a number, got true$"),
     (
         {"stall_torque": 5.0},
         r"^\S+motor\.yaml:10:15: stall_torque: 5 N·m contradicts torque_constant × voltage / resistance = "

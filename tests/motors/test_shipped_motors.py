@@ -67,6 +67,19 @@ def test_the_catalogue_ships_at_least_twelve_motors_each_with_its_source() -> No
         assert text.count("\n#") >= 2, f"{loaded.source}: say where the values come from in a comment"
 
 
+# correlllab/h12-lab-docs docs/specs.md (commit 071574a): M107 output total equivalent moments (kg m^2).
+M107_TOTALS = {"UnitreeM107_15": (15, 0.063259741), "UnitreeM107_24": (24, 0.160478022)}
+
+
+@pytest.mark.parametrize("name", sorted(M107_TOTALS))
+def test_the_m107_motors_give_the_equivalent_moment_their_table_gives(name: str) -> None:
+    ratio, total = M107_TOTALS[name]
+    motor = MOTORS.lookup(name).spec
+    assert motor.gear_ratio == ratio
+    assert motor.rotor_inertia is not None and motor.gearbox_inertia is not None
+    assert motor.rotor_inertia * ratio**2 + motor.gearbox_inertia == pytest.approx(total, rel=1e-12)
+
+
 def test_every_shipped_motor_is_found_by_name() -> None:
     assert {loaded.spec.name for loaded in SHIPPED} <= set(MOTORS.names())
 
