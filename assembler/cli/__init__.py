@@ -10,11 +10,36 @@ closed early (:mod:`assembler.cli.endings`).
 from __future__ import annotations
 
 import importlib
+import os
+import signal
+import threading
 from collections.abc import Sequence
+from types import FrameType
 
-from assembler.cli.arguments import build_parser, parse
-from assembler.cli.endings import end_cleanly
-from assembler.files.cache_location import switched_off
+
+def _interrupted_while_starting(signum: int, frame: FrameType | None) -> None:
+    """Ctrl-C while the command's own modules are imported: nothing has started, nothing is to undo;
+    the line and exit code of :mod:`assembler.cli.endings` (130), not a traceback and a death by SIGINT."""
+    os.write(2, b"interrupted\n")
+    os._exit(130)
+
+
+# Until main() runs its command inside end_cleanly, a KeyboardInterrupt would escape the console
+# script as a traceback and a death by SIGINT (-2). Only while this module imports, and only in a
+# process whose Ctrl-C is Python's own: a program importing the CLI keeps its handler afterwards.
+_STARTING = (
+    threading.current_thread() is threading.main_thread()
+    and signal.getsignal(signal.SIGINT) is signal.default_int_handler
+)
+if _STARTING:
+    signal.signal(signal.SIGINT, _interrupted_while_starting)
+try:
+    from assembler.cli.arguments import build_parser, parse
+    from assembler.cli.endings import end_cleanly
+    from assembler.files.cache_location import switched_off
+finally:
+    if _STARTING:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 __all__ = ["build_parser", "main", "parse"]
 

@@ -170,3 +170,50 @@ def test_a_broken_cache_entry_never_writes_mujocos_log_into_the_working_folder(
     assert (done.returncode, done.stderr) == (0, "wrote b.xml\n")
     assert (tmp_path / "a.xml").read_text() == (tmp_path / "b.xml").read_text()
     assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
+
+
+INTERRUPTING_IMPORT = """
+import importlib.abc, os, signal, sys
+
+class Interrupt(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path, target=None):
+        if name == sys.argv[1]:
+            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C, as the module starts importing
+        return None
+
+sys.meta_path.insert(0, Interrupt())
+from assembler.cli import main  # as the console script does
+sys.exit(main(sys.argv[2:]))
+"""
+
+
+@pytest.mark.parametrize(
+    "module",
+    ["assembler.cli.arguments", "assembler.cli.endings", "assembler.files.cache_location", "mujoco"],
+)
+def test_ctrl_c_while_the_command_starts_is_one_line_and_130(module: str, tmp_path: Path) -> None:
+    """Found by the hostile-input battery: Ctrl-C in the first ~20 ms, while the console script
+    imports the CLI (before end_cleanly runs), was a traceback and a death by SIGINT (-2)."""
+    done = subprocess.run(
+        [sys.executable, "-c", INTERRUPTING_IMPORT, module, "build", "Sparrow7", "-o", "x.xml"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert (done.returncode, done.stderr) == (130, "interrupted\n")
+    assert os.listdir(tmp_path) == []
+
+
+def test_importing_the_cli_leaves_ctrl_c_to_the_program() -> None:
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import signal, assembler.cli; print(signal.getsignal(signal.SIGINT).__name__)",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert (done.returncode, done.stdout) == (0, "default_int_handler\n")
