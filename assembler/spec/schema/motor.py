@@ -15,10 +15,11 @@ from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from assembler.spec.schema.common import NOT_BOOL, Name, NonNegativeFloat, StrictModel, rule_error
 
-PositiveFloat = Annotated[float, NOT_BOOL, Field(gt=0.0, allow_inf_nan=False)]
-"""A finite number larger than zero."""
+PositiveFloat = Annotated[float, Field(gt=0.0, allow_inf_nan=False), NOT_BOOL]
+"""A finite number larger than zero (NOT_BOOL after the Field: before it, pydantic's JSON Schema writes the
+bound as "gt", which no editor reads, instead of "exclusiveMinimum")."""
 
-Efficiency = Annotated[float, NOT_BOOL, Field(gt=0.0, le=1.0, allow_inf_nan=False)]
+Efficiency = Annotated[float, Field(gt=0.0, le=1.0, allow_inf_nan=False), NOT_BOOL]
 """A fraction of the power that passes, above 0 and at most 1."""
 
 Control = Literal["voltage", "torque", "position"]
@@ -82,7 +83,7 @@ class MotorSpec(StrictModel):
     """Where stall_torque, peak_torque, no_load_speed, friction_torque and viscous_friction are given: at the
     motor shaft, or at the output of the spec's own gearbox (an integrated actuator's datasheet)."""
 
-    tolerance: Annotated[float, NOT_BOOL, Field(gt=0.0, lt=1.0)] = 0.1
+    tolerance: Annotated[float, Field(gt=0.0, lt=1.0), NOT_BOOL] = 0.1
     """How far (a fraction) stall_torque may differ from kt·V/R and no_load_speed from V/kt before the spec is
     refused: datasheets round, and measure at a temperature."""
 
