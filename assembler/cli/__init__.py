@@ -33,13 +33,13 @@ _STARTING = (
 )
 if _STARTING:
     signal.signal(signal.SIGINT, _interrupted_while_starting)
-try:
-    from assembler.cli.arguments import build_parser, parse
-    from assembler.cli.endings import end_cleanly
-    from assembler.files.cache_location import switched_off
-finally:
-    if _STARTING:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+from assembler.cli.arguments import build_parser, parse  # noqa: E402 - after the handler, on purpose
+from assembler.cli.endings import end_cleanly  # noqa: E402
+from assembler.files.cache_location import switched_off  # noqa: E402
+
+if _STARTING:  # an import that failed otherwise ends the process with its traceback anyway
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 __all__ = ["build_parser", "main", "parse"]
 
