@@ -104,14 +104,20 @@ class RequestRecord:
 
 def request_key(request: Mapping[str, Any]) -> str | None:
     """The key of ``request`` (plain JSON data) in this environment, or None when the request
-    holds something that is not plain data (it cannot be compared across processes)."""
+    holds something that is not plain data (it cannot be compared across processes) or the working
+    folder is gone (deleted under the process: what relative paths meant then is unknown)."""
+    try:
+        cwd = os.getcwd()
+        path = [os.path.abspath(entry) for entry in sys.path]
+    except OSError:
+        return None
     material = {
         "format": FORMAT,
         "assembler": code_fingerprint(),
         "mujoco": mujoco.__version__,
         "environment": resolution_environment(),
-        "path": [os.path.abspath(entry) for entry in sys.path],
-        "cwd": os.getcwd(),
+        "path": path,
+        "cwd": cwd,
         "allowed": os.environ.get(ALLOW_VARIABLE, ""),
         "request": request,
     }

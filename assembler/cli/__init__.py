@@ -36,6 +36,7 @@ if _STARTING:
 
 from assembler.cli.arguments import build_parser, parse  # noqa: E402 - after the handler, on purpose
 from assembler.cli.endings import end_cleanly  # noqa: E402
+from assembler.errors import AssemblerError  # noqa: E402
 from assembler.files.cache_location import switched_off  # noqa: E402
 
 if _STARTING:  # an import that failed otherwise ends the process with its traceback anyway
@@ -44,11 +45,23 @@ if _STARTING:  # an import that failed otherwise ends the process with its trace
 __all__ = ["build_parser", "main", "parse"]
 
 
+def working_folder() -> str:
+    """The working folder; :class:`AssemblerError` when it no longer exists."""
+    try:
+        return os.getcwd()
+    except OSError as error:
+        raise AssemblerError(
+            f"the working folder cannot be read ({error.strerror}): it was deleted or moved away; "
+            "cd to a folder that exists and run the command again"
+        ) from None
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """The ``assembler`` command; returns its exit code."""
 
     def command() -> int:
         args = parse(argv)
+        working_folder()  # gone (deleted under the shell): one line, not a traceback from deep inside
         with switched_off(bool(getattr(args, "no_cache", False))):
             if args.command == "build":  # a build made before is answered before any spec is read
                 answered = importlib.import_module("assembler.cli.cached_build").answer(args)

@@ -63,7 +63,7 @@ def display_path(path: str | Path) -> str:
     resolved = Path(path)
     try:
         return str(resolved.relative_to(Path.cwd()))
-    except ValueError:
+    except (ValueError, OSError):  # elsewhere, or the working folder is gone
         return str(resolved)
 
 

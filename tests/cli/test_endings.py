@@ -217,3 +217,49 @@ def test_importing_the_cli_leaves_ctrl_c_to_the_program() -> None:
         timeout=120,
     )
     assert (done.returncode, done.stdout) == (0, "default_int_handler\n")
+
+
+IN_A_DELETED_FOLDER = """
+import os, sys
+os.makedirs(sys.argv[1])
+os.chdir(sys.argv[1])
+os.rmdir(sys.argv[1])  # the working folder is gone, as after rm -rf of the shell's folder
+if sys.argv[2] == "api":
+    import assembler
+    model = assembler.load_model("Sparrow7")
+    print(model.njnt, assembler.assemble("Sparrow7").get_xml()[:7])
+else:
+    from assembler.cli import main
+    sys.exit(main(sys.argv[2:]))
+"""
+
+
+@pytest.mark.parametrize(
+    ("words", "expected"),
+    [
+        (["build", "Sparrow7", "-o", "{tmp}/x.xml"], "deleted"),
+        (["validate", "Sparrow7"], "deleted"),
+        (["api"], ""),
+    ],
+    ids=["build", "validate", "the-api-still-works"],
+)
+def test_a_deleted_working_folder_is_one_line(words: list[str], expected: str, tmp_path: Path) -> None:
+    """Found by the hostile-input battery: the request's key read os.getcwd() (a traceback)."""
+    script = tmp_path / "run.py"
+    script.write_text(IN_A_DELETED_FOLDER)
+    argv = [word.format(tmp=tmp_path) for word in words]
+    for _ in range(2):  # compiled, then answered from the cache
+        done = subprocess.run(
+            [sys.executable, str(script), str(tmp_path / "gone"), *argv],
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
+        if expected:
+            assert (done.returncode, done.stderr) == (
+                1,
+                "the working folder cannot be read (No such file or directory): it was deleted or moved "
+                "away; cd to a folder that exists and run the command again\n",
+            )
+        else:
+            assert (done.returncode, done.stdout, done.stderr) == (0, "9 <mujoco\n", "")
