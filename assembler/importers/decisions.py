@@ -13,6 +13,7 @@ from assembler.importers.entries import Entry
 from assembler.importers.physics import home_pose, posed_data, scalar_joints, torque_limit
 from assembler.importers.reading import ModelFile
 from assembler.importers.tree import Tree
+from assembler.models.motor_table import MOTORS
 from assembler.robosuite.conventions import has_force_range, is_bridge_servo
 from assembler.tools.lint.gripper_pose import ROOT_OFFSET_LIMIT
 
@@ -78,7 +79,25 @@ def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
             "torque gravity can load each joint with (arm stretched out); set each joint's torque limit "
             "from the datasheet"
         )
+    motors = _shipped_motors({name: limit.value for name, limit in limits.items() if limit.from_file})
+    if motors:
+        entry.decide(
+            f"the file's effort limits are those of shipped motors ({motors}): a motors: entry per joint, "
+            "e.g. {match: JOINT, motor: NAME, control: torque}, gives each joint its motor's armature and "
+            "limit instead of these motors (docs/motors.md); check that the robot has these motors"
+        )
     return entry
+
+
+def _shipped_motors(efforts: dict[str, float]) -> str:
+    """Joints whose effort limit is a shipped motor's torque limit, grouped by the motors, as text
+    (``FL_hip_joint, FR_hip_joint: UnitreeGo1HipMotor or UnitreeGo2HipMotor; ...``); "" if none."""
+    groups: dict[tuple[str, ...], list[str]] = {}
+    for joint, effort in efforts.items():
+        names = tuple(MOTORS.limited_to(effort))
+        if names:
+            groups.setdefault(names, []).append(joint)
+    return "; ".join(f"{_short(joints, 4)}: {' or '.join(names)}" for names, joints in groups.items())
 
 
 def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:

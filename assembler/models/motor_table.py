@@ -14,10 +14,11 @@ from collections.abc import Iterator, Sequence
 
 from assembler.errors import Problem, RegistryError
 from assembler.files.paths import shipped_specs_dir
+from assembler.models.motor_rules import Drive
 from assembler.models.registering import unknown_name
 from assembler.spec.documents import LoadedSpec
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema import MotorSpec
+from assembler.spec.schema import JointMotor, MotorSpec
 from assembler.spec.spec_files import load_motors, read_spec_files
 
 SHIPPED_FOLDER = "motors"
@@ -102,6 +103,18 @@ class MotorTable:
                 found[name] = self.lookup(name).spec.model_dump(mode="json")
             except RegistryError:
                 continue
+        return found
+
+    def limited_to(self, torque: float, tolerance: float = 0.01) -> list[str]:
+        """The motors whose torque limit with their own gearbox (peak or stall torque × N × η) is
+        ``torque`` within ``tolerance`` (a fraction): the candidates for a joint whose file gives that
+        effort limit, sorted."""
+        found = []
+        for name in self.names():
+            motor = self.lookup(name).spec
+            limit = Drive(motor, JointMotor(match="*", motor=name), 0).torque_limit()
+            if limit is not None and abs(limit.value - torque) <= tolerance * torque:
+                found.append(name)
         return found
 
     def origins(self, names: Sequence[str] | None = None) -> tuple[tuple[str, int, int], ...]:
