@@ -7,7 +7,9 @@
 - standard output cannot be written (``> /dev/full``, or closed: ``>&-``): one line naming the
   reason, exit 1; a closed standard stream is first pointed at ``/dev/null``, so no file the command
   opens can take its number and receive what a library prints;
-- a MuJoCo warning: one line ``warning: ...`` on standard error, the command goes on.
+- a MuJoCo warning: one line ``warning: ...`` on standard error, the command goes on;
+- MuJoCo failing to start its OpenGL backend as it is imported (``MUJOCO_GL`` set to a value it
+  does not know, or ``osmesa`` without the OSMesa library): one line saying what to set, exit 1.
 
 Anything else is a bug in the assembler and is allowed to crash with its traceback.
 """
@@ -18,8 +20,10 @@ import errno
 import io
 import os
 import sys
+import traceback
 import warnings
 from collections.abc import Callable
+from pathlib import Path
 from typing import TextIO
 
 from assembler.errors import AssemblerError, MujocoWarning
@@ -96,7 +100,7 @@ def end_cleanly(command: Callable[[], int]) -> int:
         if not _caused_by_ctrl_c(
             error
         ):  # Ctrl-C inside a compiled module's start reads "initialization failed"
-            raise
+            return _opengl_problem(error)
         print("interrupted", file=sys.stderr)
         return INTERRUPTED
     except BrokenPipeError:
@@ -107,7 +111,36 @@ def end_cleanly(command: Callable[[], int]) -> int:
             _silence_stdout()
             print(f"cannot write to standard output: {error.strerror}", file=sys.stderr)
             return 1
-        raise
+        return _opengl_problem(error)
+    except Exception as error:
+        return _opengl_problem(error)
+
+
+GL_MODULES = ("gl_context", "osmesa", "egl", "glfw", "cgl")
+"""MuJoCo's modules that start an OpenGL backend when ``mujoco`` is imported."""
+
+
+def _opengl_problem(error: Exception) -> int:
+    """Exit 1 with one line when ``error`` came from MuJoCo starting the backend ``MUJOCO_GL`` names
+    (its modules, or PyOpenGL under them); re-raise it otherwise (a bug)."""
+    backend = os.environ.get("MUJOCO_GL", "")
+    files = [Path(frame.filename) for frame in traceback.extract_tb(error.__traceback__)]
+    started = any(
+        "OpenGL" in file.parts
+        or ("mujoco" in file.parts and (file.stem in GL_MODULES or file.parent.name in GL_MODULES))
+        for file in files
+    )
+    if not backend or not started:
+        raise error
+    reason = " ".join(str(error).split()) or type(error).__name__
+    if not isinstance(error, RuntimeError):  # PyOpenGL's words say little: a library is missing
+        reason = f"its OpenGL library cannot be loaded ({reason})"
+    print(
+        f"MuJoCo cannot start with MUJOCO_GL={backend}: {reason}; set MUJOCO_GL=egl (GPU or Mesa EGL) or "
+        "MUJOCO_GL=osmesa (software rendering), install the library it needs, or unset it",
+        file=sys.stderr,
+    )
+    return 1
 
 
 def _caused_by_ctrl_c(error: BaseException) -> bool:

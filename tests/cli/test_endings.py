@@ -4,6 +4,7 @@ depth, NUL characters in paths. Commands run in new processes, as a user runs th
 
 from __future__ import annotations
 
+import ctypes.util
 import os
 import signal
 import subprocess
@@ -263,3 +264,48 @@ def test_a_deleted_working_folder_is_one_line(words: list[str], expected: str, t
             )
         else:
             assert (done.returncode, done.stdout, done.stderr) == (0, "9 <mujoco\n", "")
+
+
+OPENGL_ADVICE = (
+    "set MUJOCO_GL=egl (GPU or Mesa EGL) or MUJOCO_GL=osmesa (software rendering), install the library it "
+    "needs, or unset it"
+)
+
+
+@pytest.mark.parametrize(
+    ("backend", "words", "reason"),
+    [
+        (
+            "bogus",
+            ["render", "Sparrow7", "-o", "x.png"],
+            "invalid value for environment variable MUJOCO_GL: bogus",
+        ),
+        (
+            "bogus",
+            ["build", "Sparrow7", "-o", "x.xml"],
+            "invalid value for environment variable MUJOCO_GL: bogus",
+        ),
+        ("osmesa", ["render", "Sparrow7", "-o", "x.png"], "its OpenGL library cannot be loaded ("),
+        ("osmesa", ["list", "bases"], "its OpenGL library cannot be loaded ("),
+    ],
+)
+def test_a_mujoco_gl_that_mujoco_cannot_start_is_one_line(
+    backend: str, words: list[str], reason: str, tmp_path: Path
+) -> None:
+    """Found by the hostile-input battery: MuJoCo starts its OpenGL backend when it is imported, so a
+    MUJOCO_GL it does not know, or osmesa without the OSMesa library, was a traceback in any command."""
+    if backend == "osmesa" and ctypes.util.find_library("OSMesa"):
+        pytest.skip("OSMesa is installed here")
+    done = subprocess.run(
+        [sys.executable, "-c", CLI, *words],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        env={**os.environ, "MUJOCO_GL": backend},
+        timeout=300,
+    )
+    (line,) = done.stderr.splitlines()
+    assert done.returncode == 1
+    assert line.startswith(f"MuJoCo cannot start with MUJOCO_GL={backend}: {reason}")
+    assert line.endswith(f"; {OPENGL_ADVICE}")
+    assert os.listdir(tmp_path) == []

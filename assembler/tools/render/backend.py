@@ -49,13 +49,14 @@ def choose_backend() -> str:
 
 def new_renderer(model: mujoco.MjModel, width: int, height: int) -> mujoco.Renderer:
     """An offscreen renderer, or one :class:`RenderError` line saying what to set."""
-    backend = choose_backend()
     try:
+        choose_backend()  # may reload MuJoCo's chooser, which refuses a MUJOCO_GL it does not know
         with warnings.catch_warnings():  # GLFW warns before failing; the error below says it all
             warnings.simplefilter("ignore")
             return mujoco.Renderer(model, height=height, width=width)
     except Exception as error:  # each backend fails differently (ImportError, RuntimeError, FatalError)
         reason = " ".join(str(error).split()) or type(error).__name__
+        backend = os.environ.get("MUJOCO_GL", "").lower().strip() or "glfw"
         raise RenderError(
             f"cannot create an OpenGL context for offscreen rendering (MUJOCO_GL={backend}): {reason}. "
             "Set MUJOCO_GL=egl (GPU or Mesa EGL) or MUJOCO_GL=osmesa (software rendering), "
