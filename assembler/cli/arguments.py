@@ -142,7 +142,7 @@ def _list(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "what",
         nargs="?",
-        choices=("robots", "bases", "grippers"),
+        choices=("robots", "bases", "grippers", "motors"),
         default="robots",
         help="what to list (robots)",
     )

@@ -1,4 +1,5 @@
-"""``assembler list``: the registered robots, bases or grippers, by name, with their size and spec file.
+"""``assembler list``: the registered robots, bases, grippers or motors, by name, with their size (a
+motor: its gear ratio, torque limit and reflected inertia with its own gearbox) and spec file.
 
 Spec files are shown short: relative to the working directory when below it, and shipped specs
 as ``specs/...`` (where they sit in a checkout) even when read from an installed package's
@@ -17,7 +18,10 @@ from assembler.cli.common import table
 from assembler.errors import AssemblerError, MissingPackageError
 from assembler.files.paths import display_path, shipped_specs_dir
 from assembler.models import PartModel
+from assembler.models.motor_rules import Drive
+from assembler.models.motor_table import MOTORS
 from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.spec.schema import JointMotor
 
 
 def _dof_text(cls: type[PartModel]) -> str:
@@ -63,6 +67,22 @@ def run(args: argparse.Namespace) -> int:
         rows: list[tuple[str, ...]] = [("base", "type", "joints", "spec")]
         for name, base in _by_name(REGISTERED_BASES):
             rows.append((name, base.spec.type, _dof_text(base), _source(base)))
+    elif args.what == "motors":
+        rows = [("motor", "gear ratio", "torque limit (N m)", "armature (kg m2)", "spec")]
+        for name in sorted(MOTORS.names(), key=str.casefold):
+            loaded = MOTORS.lookup(name)
+            drive = Drive(loaded.spec, JointMotor(match="*", motor=name), 0)
+            limit, armature = drive.torque_limit(), drive.armature()
+            path = loaded.document.path
+            rows.append(
+                (
+                    name,
+                    f"{loaded.spec.gear_ratio:g}",
+                    f"{limit.value:.4g}" if limit is not None else "-",
+                    f"{armature.value:.4g}" if armature is not None else "-",
+                    short_path(path) if path is not None else loaded.document.file,
+                )
+            )
     elif args.what == "grippers":
         rows = [("gripper", "joints", "spec")]
         for name, gripper in _by_name(REGISTERED_GRIPPERS):
