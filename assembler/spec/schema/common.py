@@ -19,7 +19,7 @@ def _refuse_bool(value: Any) -> Any:
 NOT_BOOL = BeforeValidator(_refuse_bool)
 """Put in a number type's ``Annotated``: ``true`` and ``false`` are refused, not read as 1 and 0."""
 
-FiniteFloat = Annotated[float, NOT_BOOL, Field(allow_inf_nan=False)]
+FiniteFloat = Annotated[float, Field(allow_inf_nan=False), NOT_BOOL]
 """A real number; NaN, infinities and booleans are refused at validation."""
 
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
@@ -27,7 +27,7 @@ NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
 Name = Annotated[str, Field(pattern=NAME_PATTERN, max_length=64)]
 """A registry name: it becomes a Python class name, so letters, digits and underscores."""
 
-NonNegativeFloat = Annotated[float, NOT_BOOL, Field(ge=0.0, allow_inf_nan=False)]
+NonNegativeFloat = Annotated[float, Field(ge=0.0, allow_inf_nan=False), NOT_BOOL]
 """A finite number that is zero or larger."""
 
 
