@@ -9,12 +9,12 @@ from collections.abc import Sequence
 from assembler.errors import AssemblerError
 from assembler.files.inputs import note_inputs
 from assembler.models import RobotModel
-from assembler.patch.override_effects import overrides_without_effect, superseded
 from assembler.registry.catalog import register_with_siblings
 from assembler.registry.instances import assemble, create_robot
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import Override, parse_overrides
 from assembler.spec.part_arguments import DEFAULT, is_spec_file
+from assembler.worlds.variants.effects import overrides_without_effect, superseded
 
 
 def robot_name(reference: str) -> str:

@@ -15,8 +15,8 @@ import pytest
 
 from assembler.cli import main
 from assembler.cli.arguments import parse
-from assembler.patch.override_effects import superseded
 from assembler.spec.documents import parse_overrides
+from assembler.worlds.variants.effects import superseded
 
 CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
 

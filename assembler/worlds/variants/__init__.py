@@ -1,6 +1,6 @@
 """Variants of one robot: a grid of override values and seeded random draws, built in parallel
 (:mod:`~assembler.worlds.variants.plan`, :mod:`~assembler.worlds.variants.run`), and which varied
-fields changed nothing (:mod:`~assembler.worlds.variants.effects`)."""
+fields changed nothing (:mod:`~assembler.worlds.variants.effects`, the rule ``build --set`` follows too)."""
 
 from pathlib import Path
 
@@ -26,7 +26,6 @@ __all__ = [
     "VariantRun",
     "Shard",
     "failures",
-    "fields_without_effect",
     "merge_shards",
     "run_variants",
     "write_manifest",
@@ -40,4 +39,4 @@ def write_variants(
     """Build every variant of ``plan`` (or of one ``shard``) into ``folder`` (see :func:`run_variants`),
     and find the varied fields that changed nothing in what was written."""
     results = run_variants(plan, folder, shard, progress)
-    return VariantRun(results, fields_without_effect(plan, results))
+    return VariantRun(results, fields_without_effect(plan, results, folder))

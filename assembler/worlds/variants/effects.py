@@ -1,24 +1,39 @@
-"""Which ``--set`` overrides change nothing in the compiled model, so a build can say so.
+"""The one "changed nothing" rule: a ``--set`` override or a varied field has no effect when the
+models with and without it are the same (:func:`same_model`), so a build or a sweep can say so.
 
 An override that changes nothing is almost always a mistake a reviewer would want flagged:
-``joint_defaults.damping`` on a robot whose ``joints:`` set damping on every joint, say. Each
-override is tested by building without it (from the cache when the plain robot is there) and
-comparing the two compiled models field by field. Not byte for byte: one of the two may be a variant
-patched onto the cached robot (:mod:`assembler.patch.robot_variant`) and the other compiled, and those agree
-to 1e-10, not to the last bit.
+``joint_defaults.damping`` on a robot whose ``joints:`` set damping on every joint, say.
+
+- ``build --set`` (:func:`overrides_without_effect`): each override is tested by building without it
+  (from the cache when the plain robot is there); an override a later one replaces is idle without
+  a build (:func:`superseded`).
+- ``variants`` (:func:`fields_without_effect`): a field has an effect when two written variants that
+  differ in it alone differ; grids give such pairs directly, and where none was written (random draws
+  vary every field at once) one probe is built: the first variant with only this field changed to
+  another variant's value. Identical files are the same model without a load (MJCF emission is
+  deterministic); files that differ are loaded and compared by the same rule.
+
+Models are compared field by field, not byte for byte: one of the two may be a variant patched onto
+the cached robot (:mod:`assembler.patch.robot_variant`) and the other compiled, and those agree to
+1e-10, not to the last bit.
 """
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import Any
 
 import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.errors import AssemblerError
 from assembler.models import RobotModel
 from assembler.spec.documents import Override
+from assembler.worlds.variants.plan import VariantPlan
+from assembler.worlds.variants.run import VariantResult, variant_xml
 
 RELATIVE = 1e-9
 """How close two numbers of two models must be to be the same (a patch agrees with a compile to 1e-10)."""
@@ -84,3 +99,58 @@ def overrides_without_effect(
         if same_model(build(others).get_model(cache=cache, store=False), full):
             idle.add(index)
     return [overrides[index] for index in sorted(idle)]
+
+
+def _shown(value: Any) -> str:
+    """A value as a hashable, comparable key (grid values may be lists or mappings)."""
+    return json.dumps(value, sort_keys=True, default=str)
+
+
+def _same_files(first: str, second: str, load: Callable[[str], mujoco.MjModel]) -> bool:
+    """Whether two written variants are the same model: identical text is, other text is compared
+    as compiled models (:func:`same_model`)."""
+    return first == second or same_model(load(first), load(second))
+
+
+def _has_effect(plan: VariantPlan, written: Sequence[VariantResult], folder: Path, key: str) -> bool:
+    """Whether ``key`` changed a written variant: two written variants that differ in it alone are
+    different models; where no such pair was written, one probe is built."""
+    texts: dict[str, str] = {}
+
+    def text(name: str) -> str:
+        if name not in texts:
+            texts[name] = (folder / name).read_text()
+        return texts[name]
+
+    def load(xml: str) -> mujoco.MjModel:
+        return mujoco.MjModel.from_xml_string(xml)
+
+    values = {result.index: plan.variant(result.index) for result in written}
+    files = {result.index: str(result.file) for result in written}
+    alike: dict[str, dict[str, int]] = {}  # the other fields -> this field's value -> a variant with it
+    for index, variant in values.items():
+        others = _shown({other: value for other, value in variant.items() if other != key})
+        alike.setdefault(others, {}).setdefault(_shown(variant[key]), index)
+    pairs = [list(by_value.values())[:2] for by_value in alike.values() if len(by_value) > 1]
+    if pairs:
+        return any(not _same_files(text(files[a]), text(files[b]), load) for a, b in pairs)
+    first = min(values)
+    other = next((v for v in plan.variants() if v[key] != values[first][key]), None)
+    if other is None:
+        return False  # every value the same: nothing was varied
+    try:
+        probe = variant_xml(plan, {**values[first], key: other[key]})
+    except AssemblerError:
+        return True  # the value matters enough to break the build
+    return not _same_files(probe, text(files[first]), load)
+
+
+def fields_without_effect(
+    plan: VariantPlan, results: Sequence[VariantResult], folder: str | Path
+) -> list[str]:
+    """The varied fields that made no difference to the variants written in ``folder``, in the
+    plan's order."""
+    written = [result for result in results if result.file is not None]
+    if not written:
+        return []
+    return [key for key in plan.varied() if not _has_effect(plan, written, Path(folder), key)]
