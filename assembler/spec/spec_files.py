@@ -8,12 +8,13 @@ document's model by its ``kind`` and walks folders.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from assembler.errors import AssemblerError, Problem, SpecError
-from assembler.files.paths import confine, display_path
+from assembler.files.paths import confine, display_path, is_dir
 from assembler.spec.documents import (
     LoadedSpec,
     LocatedDocument,
@@ -120,9 +121,9 @@ def read_spec_files(paths: Iterable[str | Path]) -> SpecFiles:
     problems = found.problems
     for given in paths:
         path = Path(given)
-        if path.is_dir():
+        if is_dir(path):  # neither raises for a name too long for the file system: it is no file
             files = spec_files(path)
-        elif path.exists():
+        elif os.path.lexists(path):
             files = [path]
         else:
             problems.append(Problem(f"no such file or folder: {display_path(path)}"))
