@@ -146,11 +146,11 @@ def _write(
         copied: set[str] = set()
         for source, relative in placed.items():
             if relative not in copied:
-                if not (directory / relative).exists():
+                if not os.path.lexists(directory / relative):
                     created.append(directory / relative)
                 copy_atomically(Path(source), directory / relative)
                 copied.add(relative)
-        if not xml_target.exists():
+        if not os.path.lexists(xml_target):
             created.append(xml_target)
         write_atomically(xml_target, _rewrite(root, placed))
         if names:

@@ -110,7 +110,7 @@ def make_folder(path: Path) -> None:
 def undone_on_failure(folder: Path) -> Iterator[list[Path]]:
     """Yield a list for the files the block creates; if the block fails, those files and the
     folders up to ``folder`` that did not exist before are removed (a failed bundle leaves nothing)."""
-    missing = [parent for parent in (folder, *folder.parents) if not parent.exists()]
+    missing = [parent for parent in (folder, *folder.parents) if not os.path.lexists(parent)]
     created: list[Path] = []
     try:
         yield created

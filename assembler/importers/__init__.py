@@ -10,6 +10,7 @@ into YAML. Nothing in the vendor's files is changed.
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -161,11 +162,11 @@ def write_new_spec(
     folder); an existing file is kept unless ``force``. Returns the spec and where it was written."""
     written = new_spec(model_path, spec_path or Path.cwd() / "new.yaml", kind)
     target = spec_path or Path(snake_case(written.name) + ".yaml")
-    if target.exists() and not force:
+    if os.path.lexists(target) and not force:  # a link too; a name too long is the writer's to say
         raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")
     toml = declaration(written.packages)
     marker = target.parent / MARKER
-    if toml is not None and marker.exists():
+    if toml is not None and os.path.lexists(marker):
         raise AssemblerError(
             f"{display_path(marker)}: exists; add what new would write to it: {toml.splitlines()[-1]}"
         )

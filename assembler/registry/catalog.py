@@ -15,7 +15,7 @@ from typing import Any, TypeVar
 import yaml
 
 from assembler.errors import AssemblerError, Problem, RegistryError
-from assembler.files.paths import shipped_specs_dir
+from assembler.files.paths import is_file, shipped_specs_dir
 from assembler.models import (
     BASE_TYPE_CLASSES,
     MORPHOLOGY_CLASSES,
@@ -205,7 +205,7 @@ def register_with_siblings(paths: Sequence[str | Path]) -> list[type[PartModel]]
     name (``specs/z1_with_gripper.yaml`` naming the gripper of ``specs/z1_gripper.yaml``); return the
     classes of ``paths`` only. A spec beside it that does not load never blocks it: the paths are
     then registered alone, and report their own problems."""
-    files = [Path(path) for path in paths if Path(path).is_file()]
+    files = [Path(path) for path in paths if is_file(path)]  # a name too long is no file: said later
     siblings = _part_specs_beside(files)
     if not siblings:
         return register_specs(*paths)
