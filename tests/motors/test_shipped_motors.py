@@ -34,6 +34,11 @@ def reflected_inertia_from_two_stage_planetary(
     return r1 + r2 + rotor_inertia[2]
 
 
+# mjlab go1_constants.py (commit 0eda4e7): ROTOR_INERTIA, HIP_GEAR_RATIO, KNEE_GEAR_RATIO, effort and
+# velocity limits (the last are the URDF's, which MuJoCo keeps as no joint field: checked on the URDF).
+GO1_ROTOR_INERTIA = 0.000111842
+GO1 = {"hip": (6, 23.7, 30.1), "thigh": (6, 23.7, 30.1), "calf": (6 * 1.5, 35.55, 20.06)}
+
 # mjlab go2_constants.py (commit 3c5e2ea): ROTOR_INERTIA, HIP_GEAR_RATIO, KNEE_GEAR_RATIO, effort limits.
 GO2_ROTOR_INERTIA = 0.000111842
 GO2 = {"hip": (6, 23.7), "thigh": (6, 23.7), "calf": (6 * 1.5, 45.43)}
@@ -82,6 +87,21 @@ def test_the_m107_motors_give_the_equivalent_moment_their_table_gives(name: str)
 
 def test_every_shipped_motor_is_found_by_name() -> None:
     assert {loaded.spec.name for loaded in SHIPPED} <= set(MOTORS.names())
+
+
+@NEEDS_URDFS
+@pytest.mark.parametrize("part", sorted(GO1))
+def test_go1_with_its_shipped_motors_has_the_armature_effort_and_velocity_of_mjlab_go1(part: str) -> None:
+    base = registered_class("base", "Go1")(idn=0)
+    model = base.compile_alone()
+    ratio, effort, velocity = GO1[part]
+    for leg in ("FL", "FR", "RL", "RR"):
+        joint = f"{leg}_{part}_joint"
+        armature = model.joint(base.naming_prefix + joint).armature[0]
+        assert armature == pytest.approx(reflected_inertia(GO1_ROTOR_INERTIA, ratio), rel=1e-12)
+        actuator = model.actuator(base.naming_prefix + joint)
+        assert actuator.forcerange.tolist() == pytest.approx([-effort, effort], rel=1e-12)
+        assert base.source.velocity_limits[joint] == velocity
 
 
 @NEEDS_URDFS

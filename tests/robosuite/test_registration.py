@@ -45,7 +45,7 @@ BASES = {
     "QuadrupedBase": "LegBaseModel",
     "SiteOnlyBase": "NullBaseModel",
 }
-BASES |= {"Go2": "LegBaseModel"} if URDF else {}
+BASES |= {"Go1": "LegBaseModel", "Go2": "LegBaseModel"} if URDF else {}
 
 
 # ----- the shipped specs, on import --------------------------------------------------------------
