@@ -27,7 +27,7 @@ from assembler.spec.documents import Overrides
 from assembler.spec.part_arguments import is_spec_file
 
 
-def _origins(cls: type[PartModel]) -> tuple[Origin, ...]:
+def part_origins(cls: type[PartModel]) -> tuple[Origin, ...]:
     """The files a part was made from: its spec's (and its parents'), and the motor specs its
     ``motors:`` entries name (a changed motor spec changes the part)."""
     loaded = getattr(cls, "loaded", None)
@@ -45,7 +45,7 @@ def _registry_within(roots: Sequence[Path]) -> bool:
     not read yet is below them by construction: only the shipped folder's names are held)."""
     for table in REGISTRIES.values():
         for cls in table.made():
-            origins = _origins(cls)
+            origins = part_origins(cls)
             if not origins or not all(_within(origin.path, roots) for origin in origins):
                 return False
     motors = MOTORS.origins()  # a motor spec of a folder the request does not name: no record
@@ -68,8 +68,8 @@ def record_answer(
     roots = [shipped_specs_dir().resolve(), *(Path(folder).resolve() for folder in folders)]
     within = [*roots, *([robot_file.resolve()] if robot_file is not None else [])]
     parts = [type(robot), *(type(part) for part in robot.models)]
-    origins = [origin for part in parts for origin in _origins(part)]
-    if not all(_origins(part) for part in parts) or not _registry_within(within):
+    origins = [origin for part in parts for origin in part_origins(part)]
+    if not all(part_origins(part) for part in parts) or not _registry_within(within):
         return False
     return record(request, key, origins, roots, notes, type(robot).__name__)
 

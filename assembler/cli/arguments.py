@@ -151,7 +151,19 @@ def _list(parser: argparse.ArgumentParser) -> None:
 def _validate(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("paths", nargs="*", help="spec files or folders (default: the --specs folders)")
     parser.add_argument("--compile", action="store_true", help="also compile each robot with MuJoCo")
+    parser.add_argument(
+        "--locked",
+        action="store_true",
+        help="fail when a file robot-assembler.lock lists changed (one line per file, with the robots it "
+        "affects); needs no paths",
+    )
     add_format_argument(parser, ("text", "github"))
+
+
+def _lock(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "paths", nargs="*", help="spec files or folders to cover (default: the repository's spec folders)"
+    )
 
 
 def _lint(parser: argparse.ArgumentParser) -> None:
@@ -326,6 +338,12 @@ class Command:
 COMMANDS: tuple[Command, ...] = (
     Command("list", "registered robots (or bases, grippers)", _list, "assembler.cli.listing"),
     Command("validate", "check spec files and folders", _validate, "assembler.cli.validate"),
+    Command(
+        "lock",
+        "write robot-assembler.lock: the sha256 of every file each robot's build reads",
+        _lock,
+        "assembler.cli.validate",
+    ),
     Command("lint", "report problems MuJoCo accepts silently (codes RA101...)", _lint, "assembler.cli.lint"),
     Command("build", "write a robot's standalone MJCF", _build, "assembler.cli.build"),
     Command("scene", "several placed robots in one MJCF", _scene, "assembler.cli.scene"),

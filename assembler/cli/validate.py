@@ -1,4 +1,5 @@
-"""``assembler validate``: check spec files and folders (schema, names, optionally a compile).
+"""``assembler validate``: check spec files and folders (schema, names, optionally a compile), and the
+repository's lock (``--locked``); ``assembler lock`` writes that lock (:mod:`assembler.tools.lock`).
 
 The summary counts what was done to each spec: validated against its model file (and compiled, with
 ``--compile``), or only validated because the package holding its model file is not installed (one
@@ -8,9 +9,12 @@ line per missing package, with the specs it leaves unchecked and what to install
 from __future__ import annotations
 
 import argparse
+import sys
 
 from assembler.cli.report import print_problems
 from assembler.errors import AssemblerError
+from assembler.files.paths import display_path
+from assembler.tools.lock import check_locked, write_lock
 from assembler.tools.validate import ValidationReport, validate_specs
 
 
@@ -36,14 +40,29 @@ def summary(report: ValidationReport, compiled: bool) -> list[str]:
     return lines
 
 
+def lock(args: argparse.Namespace) -> int:
+    target, written = write_lock(args.paths)
+    count = sum(len(robot.files) for robot in written.robots.values())
+    robots = f"{len(written.robots)} robot{'s' if len(written.robots) != 1 else ''}"
+    print(f"wrote {display_path(target)}: {count} files of {robots}", file=sys.stderr)
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
+    if args.command == "lock":
+        return lock(args)
+    lines: list[str] = []
     try:
         paths = args.paths or args.specs
-        if not paths:
+        if args.locked:
+            path, count = check_locked()
+            lines.append(f"{display_path(path)}: the {count} files it lists are unchanged")
+        elif not paths:
             raise AssemblerError("validate: give spec files or folders (or --specs DIR)")
-        report = validate_specs(paths, compile=args.compile)
+        if paths:
+            lines = summary(validate_specs(paths, compile=args.compile), args.compile) + lines
     except AssemblerError as error:  # printed in the chosen format (GitHub annotations in CI)
         print_problems(error.problems, args.format)
         return 1
-    print("\n".join(summary(report, args.compile)))
+    print("\n".join(lines))
     return 0

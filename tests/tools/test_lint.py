@@ -409,8 +409,12 @@ def test_pre_commit_hooks_run_real_commands_on_spec_files(capsys: pytest.Capture
     }
     (subcommands,) = [a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction)]
     commands = set(subcommands.choices)
-    assert [hook["id"] for hook in hooks] == ["assembler-validate", "assembler-lint"]
-    for hook in hooks:
+    assert [hook["id"] for hook in hooks] == ["assembler-validate", "assembler-lint", "assembler-locked"]
+    *per_file, locked = hooks
+    program, command, *flags = locked["entry"].split()  # the whole repository's lock, no file names
+    assert program in scripts and command in commands and not locked["pass_filenames"]
+    assert build_parser().parse_args([command, *flags]).locked
+    for hook in per_file:
         program, command, *flags = hook["entry"].split()
         assert program in scripts and command in commands and hook["language"] == "python"
         assert re.search(hook["files"], "specs/sparrow7.yaml") and re.search(
