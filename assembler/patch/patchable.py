@@ -198,7 +198,7 @@ def _actuator_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, 
                 raise NotPatchable(f"actuators: '{name}' changes its {attribute}, which is structural")
         row = model.actuator(variant.prefix + name).id
         for attribute, target in ACTUATOR_VALUES:
-            value = np.asarray(getattr(new, attribute), dtype=float)
+            value = np.array(getattr(new, attribute), dtype=float)  # a copy: the spec may be freed first
             changed = not np.array_equal(value, getattr(old, attribute))
             switched = not value.any() or not np.asarray(getattr(old, attribute)).any()
             if attribute.endswith("range") and changed and switched:
