@@ -15,6 +15,7 @@ import pytest
 
 from assembler.cli import main
 from assembler.files.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
+from assembler.files.writing import shown
 from tests.conftest import MOBILE_MJCF, TWO_LINK_MJCF
 
 ARM = b"name: Arm\nmjcf: twolink.xml\n"
@@ -42,6 +43,20 @@ CASES = [
     pytest.param(ARM + b"horizontal_radius: " + b"1" * 5000 + b"\n", ["{spec}:3:20: horizontal_radius: YAML: cannot read '1111111111111111111111111111111111111...' as int"], id="integer-of-5000-digits"),
     pytest.param(ARM + b"horizontal_radius: !!float abc\n", ["{spec}:3:20: horizontal_radius: YAML: cannot read 'abc' as float"], id="explicit-float-tag-on-text"),
     pytest.param(ARM + b"remove_free_joint: !!bool maybe\n", ["{spec}:3:20: remove_free_joint: YAML: cannot read 'maybe' as bool"], id="explicit-bool-tag-on-text"),
+    # booleans are not numbers (pydantic read true as 1.0)
+    pytest.param(ARM + b"joints:\n  - {match: shoulder, damping: true}\n", ["{spec}:4:32: joints[0].damping: expected a number, got true"], id="true-for-a-number"),
+    pytest.param(ARM + b"joint_defaults: {damping: true}\n", [f"{{spec}}:3:27: joint_defaults.damping: {ONE_PER_JOINT}, got true"], id="true-for-a-rule"),
+    pytest.param(ARM + b"joint_defaults: {armature: [0.1, false]}\n", [f"{{spec}}:3:28: joint_defaults.armature: {ONE_PER_JOINT}, got [0.1, false]"], id="false-in-a-rule-list"),
+    pytest.param(ARM + b"joint_defaults: {damping: {inverse_index: true}}\n", [f"{{spec}}:3:27: joint_defaults.damping: {ONE_PER_JOINT}, got {{{{'inverse_index': True}}}}"], id="true-for-the-inverse-index"),
+    pytest.param(ARM + b"top_offset: [0, 0, false]\n", ["{spec}:3:20: top_offset[2]: expected a number, got false"], id="false-in-a-vector"),
+    pytest.param(ARM + b"init_qpos: [true, 0]\n", ["{spec}:3:13: init_qpos[0]: expected a number, got true"], id="true-in-a-pose"),
+    pytest.param(ARM + b"horizontal_radius: yes\n", ["{spec}:3:20: horizontal_radius: expected a number, got true"], id="yes-for-a-number"),
+    # control characters written as YAML escapes (YAML refuses them written out)
+    pytest.param(b'name: "Arm\\x07"\nmjcf: twolink.xml\n', ["{spec}:1:7: name: YAML: character #x0007 (written as an escape) is not allowed in text; remove it"], id="bell-in-a-name"),
+    pytest.param(ARM + b'description: "ring \\a"\n', ["{spec}:3:14: description: YAML: character #x0007 (written as an escape) is not allowed in text; remove it"], id="bell-in-a-description"),
+    pytest.param(ARM + b'joints:\n  - {match: "shoul\\x1bder"}\n', ["{spec}:4:13: joints[0].match: YAML: character #x001b (written as an escape) is not allowed in text; remove it"], id="escape-in-a-pattern"),
+    pytest.param(ARM + b'"init\\x01qpos": [0, 0]\n', ["{spec}:3:1: YAML: character #x0001 (written as an escape) is not allowed in text; remove it"], id="control-character-in-a-key"),
+    pytest.param(ARM + b'description: "\\u0085\\u009b"\n', ["{spec}:3:14: description: YAML: character #x009b (written as an escape) is not allowed in text; remove it"], id="c1-control-character"),
     # ranges
     pytest.param(BASE + b"added_joints:\n  - {name: x, type: slide, axis: [1, 0, 0], range: [1, -1]}\n", ["{spec}:6:52: added_joints[0].range: expected min < max, got [1.0, -1.0]"], id="range-min-above-max"),
     pytest.param(BASE + b"added_joints:\n  - name: x\n    type: slide\n    axis: [1, 0, 0]\n    actuator: {name: ax, kv: 10, ctrlrange: [0.5, 0.5]}\n", ["{spec}:9:45: added_joints[0].actuator.ctrlrange: expected min < max, got [0.5, 0.5]"], id="empty-ctrlrange"),
@@ -225,3 +240,71 @@ def test_a_fifo_folder_or_device_for_a_file_says_what_it_is(
         make(tmp_path / target)
     assert main(words) == 1
     assert capsys.readouterr().err == expected.format(kind=text) + "\n"
+
+
+LONG = "x" * 300
+"""A file name longer than any file system allows (255 bytes)."""
+
+WRITE = "cannot write {out}: File name too long"
+"""The line of an output whose name is too long ({out}: the name as messages cut it)."""
+
+# fmt: off
+LONG_NAMES = [
+    (["new", "twolink.xml", "-o", f"{LONG}.yaml"], WRITE),
+    (["new", "twolink.xml", "-o", f"{LONG}/arm.yaml"], WRITE),
+    (["build", "arm.yaml", "-o", f"{LONG}.xml"], WRITE),
+    (["build", "arm.yaml", "--bundle", LONG], WRITE),  # {out}: its assets folder, made first
+    (["scene", "scene.yaml", "-o", f"{LONG}.xml"], WRITE),
+    (["experiment", "experiment.yaml", "-o", f"{LONG}.xml"], WRITE),
+    (["render", "arm.yaml", "--size", "32x24", "-o", f"{LONG}.png"], WRITE),
+    (["variants", "arm.yaml", "--grid", "joint_defaults.damping=0.1", "-o", LONG], WRITE),
+    (["new", f"{LONG}.xml"], f"{LONG}.xml: no such file; give an MJCF (.xml) or URDF (.urdf) file"),
+    (["build", f"{LONG}.yaml"], f"no such file or folder: {LONG}.yaml"),
+    (["scene", f"{LONG}.yaml"], f"{LONG}.yaml: cannot read the file: File name too long"),
+]
+# fmt: on
+
+
+@pytest.mark.parametrize(("words", "expected"), LONG_NAMES, ids=[" ".join(w)[:40] for w, _ in LONG_NAMES])
+def test_a_file_name_too_long_is_one_line(
+    words: list[str],
+    expected: str,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Found by the hostile-input battery: ``new -o`` with a 300-character name was a traceback."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "twolink.xml").write_text(TWO_LINK_MJCF)
+    (tmp_path / "arm.yaml").write_text("name: Arm\nmjcf: twolink.xml\n")
+    for kind in ("scene", "experiment"):
+        (tmp_path / f"{kind}.yaml").write_text(f"kind: {kind}\nname: S\nrobots:\n  - robot: arm.yaml\n")
+    assert main(words) == 1
+    line = expected.format(out=shown(Path(words[-1] + ("/assets" if "--bundle" in words else ""))))
+    assert capsys.readouterr().err == line + "\n"
+
+
+SET = "--set joint_defaults.damping"
+
+# fmt: off
+SET_VALUES = [
+    ("[" * 2000 + "]" * 2000, f"{SET}: nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels; a spec nests a few levels deep"),
+    ("{a: " * 200 + "1" + "}" * 200, f"{SET}: nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels; a spec nests a few levels deep"),
+    ("&a [" + "*a, " * 3 + "1]", f"{SET}: a recursive alias (an anchor used inside itself) has no value; write the values out"),
+    ('"\\x07"', f"{SET}: YAML: character #x0007 (written as an escape) is not allowed in text; remove it"),
+    ("2024-01-01", f"{SET}: YAML tag 'tag:yaml.org,2002:timestamp' is not allowed; specs are plain data"),
+    ("[1, 2", f"{SET}: YAML syntax error: expected ',' or ']', but got '<stream end>'"),
+    ("true", f"{SET}: {ONE_PER_JOINT}, got true"),
+]
+# fmt: on
+
+
+@pytest.mark.parametrize(("value", "expected"), SET_VALUES, ids=[v[:20] for v, _ in SET_VALUES])
+def test_a_set_value_is_read_as_a_spec_files_values_are(
+    value: str, expected: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Found by the hostile-input battery: a deeply nested --set value was a RecursionError."""
+    spec = _folder(tmp_path) / "arm.yaml"
+    spec.write_bytes(ARM)
+    assert main(["build", str(spec), "--set", f"joint_defaults.damping={value}"]) == 1
+    assert capsys.readouterr().err == expected + "\n"

@@ -13,7 +13,6 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, TypeVar
 
-import yaml
 from pydantic import BaseModel
 
 from assembler.errors import Location, Problem, SpecError
@@ -22,6 +21,7 @@ from assembler.spec.documents.located import LocatedDocument
 from assembler.spec.documents.problems import LoadedSpec, validate
 from assembler.spec.documents.reading import PATH_FIELDS
 from assembler.spec.documents.schema_walk import SchemaMiss, step
+from assembler.spec.documents.yaml_reader import parse_yaml_value
 from assembler.spec.fieldpath import FieldPath, FieldPathError
 
 FIXED_FIELDS: tuple[str, ...] = ("name", "extends", "kind", "morphology")
@@ -74,14 +74,8 @@ def parse_override(text: str, label: str = "override ") -> Override:
             )
         )
     path = parse_path(key.strip(), label)
-    try:
-        value = yaml.safe_load(raw)
-    except yaml.YAMLError as error:
-        reason = getattr(error, "problem", None) or "invalid YAML"
-        raise SpecError(
-            Problem(f"the value '{raw}' is not valid YAML ({reason})", None, label + key)
-        ) from None
-    return Override(path, value, label)
+    # Read as a spec file's values are: bounded nesting (a deep value was a RecursionError), plain tags.
+    return Override(path, parse_yaml_value(raw, label + key.strip()), label)
 
 
 def parse_overrides(overrides: Overrides, label: str = "override ") -> list[Override]:

@@ -11,6 +11,7 @@ nesting depth, items per list, and the number of values aliases may expand to.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -56,6 +57,10 @@ class _DepthLimitedLoader(yaml.SafeLoader):  # type: ignore[misc]  # PyYAML has 
             return super().compose_node(parent, index)
         finally:
             self.depth -= 1
+
+
+_NOT_TEXT = yaml.reader.Reader.NON_PRINTABLE
+"""Characters YAML refuses in its text (control characters but tab and line ends, surrogates...)."""
 
 
 class _Builder:
@@ -126,12 +131,22 @@ class _Builder:
 
     def _scalar(self, node: yaml.Node, path: FieldPath) -> Any:
         try:
-            return self._constructor.construct_object(node, deep=True)
+            value = self._constructor.construct_object(node, deep=True)
         except (ValueError, KeyError, TypeError, OverflowError):
             # e.g. "!!float abc", "!!bool maybe", or an integer of 5000 digits
             kind = node.tag.rsplit(":", 1)[-1]
             self._problem(node, path, f"YAML: cannot read {_short(node.value)!r} as {kind}")
             return None
+        control = _NOT_TEXT.search(value) if isinstance(value, str) else None
+        if control is not None:  # "\x07", "\0": what YAML refuses written out, it lets in as an escape
+            self._problem(
+                node,
+                path,
+                f"YAML: character #x{ord(control.group()):04x} (written as an escape) is not allowed in "
+                "text; remove it",
+            )
+            return None
+        return value
 
     def _mapping(self, node: yaml.MappingNode, path: FieldPath) -> dict[str, Any]:
         result: dict[str, Any] = {}
@@ -142,8 +157,12 @@ class _Builder:
                 continue
             # Built like any value (tags checked, counted), at a placeholder path that is then dropped.
             key_placeholder = path.child("<key>")
+            before = len(self.problems)
             key = self.build(key_node, key_placeholder) if isinstance(key_node, yaml.ScalarNode) else None
             self.fields.pop(key_placeholder, None)
+            if len(self.problems) > before:  # the key's own problem (a control character), said once
+                self.problems[before:] = [replace(p, path=path or None) for p in self.problems[before:]]
+                continue
             if not isinstance(key, str):
                 self._problem(key_node, path, f"keys must be text, got {key_node.tag.rsplit(':', 1)[-1]}")
                 continue
@@ -254,6 +273,27 @@ def _compose(text: str, file: str) -> yaml.Node | None:
     finally:
         if loader is not None:
             loader.dispose()
+
+
+def parse_yaml_value(text: str, where: str) -> Any:
+    """One YAML value written outside a file (the ``VALUE`` of ``--set PATH=VALUE``), read with a spec
+    file's bounds and rules (nesting depth, items, aliases expanded, plain tags, no control
+    characters); a problem is a :class:`SpecError` naming ``where`` (``--set init_qpos``)."""
+    problems: list[Problem]
+    try:
+        node = _compose(text, where)
+        if node is None:
+            return None
+        builder = _Builder(where)
+        value = builder.build(node, TOP)
+        problems = builder.problems
+    except SpecError as error:
+        problems = list(error.problems)
+    except yaml.constructor.ConstructorError as error:
+        problems = [Problem(f"YAML: {_short(error.problem, 200)}")]
+    if problems:
+        raise SpecError([Problem(problem.message, None, where) for problem in problems])
+    return value
 
 
 def parse_yaml(text: str, file: str, folder: Path | None = None) -> LocatedDocument:

@@ -10,7 +10,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
-from assembler.spec.schema.common import StrictModel
+from assembler.spec.schema.common import NOT_BOOL, StrictModel
 from assembler.spec.schema.parts import Name
 from assembler.spec.schema.scene import SceneRobot, SceneSpec
 
@@ -21,7 +21,7 @@ class ExperimentRobot(SceneRobot):
     overrides: dict[str, Any] = Field(default_factory=dict)
     """Spec fields to change, by dotted path: {joint_defaults.damping: 0.2, init_qpos[3]: -2.0}."""
 
-    idn: Annotated[int, Field(ge=0)] | None = None
+    idn: Annotated[int, Field(ge=0), NOT_BOOL] | None = None
     """Instance number (names get the prefix robot{idn}_); null: the robot's position in the list."""
 
 

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from assembler.spec.schema.common import NonNegativeFloat
+from assembler.spec.schema.common import NOT_BOOL, NonNegativeFloat
 from assembler.spec.schema.gripper_actions import GripperActions
 from assembler.spec.schema.parts import PartSpec
 
@@ -26,7 +26,7 @@ class GripperSpec(PartSpec):
     eef_body: str = "eef"
     """The body at the grip point, whose frame defines the gripper's rotation offset."""
 
-    dof: int | None = Field(default=None, ge=0)
+    dof: Annotated[int | None, Field(ge=0), NOT_BOOL] = None
     """Number of actions the gripper takes; null: the number of ``actions`` (or of actuators without them)."""
 
     actions: GripperActions | None = None

@@ -12,7 +12,7 @@ from typing import Annotated, Any
 from pydantic import Field, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError
 
-from assembler.spec.schema.common import NonNegativeFloat, StrictModel
+from assembler.spec.schema.common import NOT_BOOL, NonNegativeFloat, StrictModel
 
 JOINT_RULE_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature")
 """The joint attributes that have a default rule, in the order robosuite applies them."""
@@ -24,8 +24,17 @@ OVERRIDABLE_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature"
 class InverseIndexRule(StrictModel):
     """Value ``inverse_index / (i + 1)`` for the robot's i-th joint (0-based, MuJoCo's joint order)."""
 
-    inverse_index: Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
+    inverse_index: Annotated[float, Field(gt=0.0, allow_inf_nan=False), NOT_BOOL]
     """The scale: robosuite uses 5.0 for armature, giving 5.0, 2.5, 1.667, ..."""
+
+
+def _shown(value: Any) -> str:
+    """A value as YAML writes it where it matters (``true``, ``[true, 0.1]``), else as Python does."""
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, list):
+        return "[" + ", ".join(_shown(item) for item in value) + "]"
+    return repr(value)
 
 
 def _one_message_for_rule(value: Any, handler: Any) -> Any:
@@ -39,7 +48,7 @@ def _one_message_for_rule(value: Any, handler: Any) -> Any:
             "joint_rule",
             "expected a non-negative number, a list of them (one per joint), "
             "a mapping 'inverse_index: <scale>' or null, got {value}",
-            {"value": repr(value)},
+            {"value": _shown(value)},
         ) from error
 
 

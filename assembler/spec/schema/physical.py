@@ -13,9 +13,9 @@ from typing import Annotated
 
 from pydantic import Field, model_validator
 
-from assembler.spec.schema.common import NonNegativeFloat, StrictModel, rule_error
+from assembler.spec.schema.common import NOT_BOOL, NonNegativeFloat, StrictModel, rule_error
 
-PositiveScale = Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
+PositiveScale = Annotated[float, Field(gt=0.0, allow_inf_nan=False), NOT_BOOL]
 """A finite factor larger than zero."""
 
 BODY_SCALES: tuple[str, ...] = ("mass_scale", "size_scale")
