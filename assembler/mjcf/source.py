@@ -95,6 +95,14 @@ mesh that does not say, so the emitted XML is the same whether or not MuJoCo dec
 this process (MuJoCo 3.9 writes the type only for meshes it has just decoded)."""
 
 
+def name_mesh_content_types(spec: mujoco.MjSpec) -> None:
+    """Write :data:`MESH_CONTENT_TYPES` into every mesh of ``spec`` that does not say its type (an
+    MJCF's or a URDF's), so its XML does not depend on what MuJoCo decoded in this process."""
+    for mesh in spec.meshes:
+        if mesh.file and not mesh.content_type:
+            mesh.content_type = MESH_CONTENT_TYPES.get(Path(mesh.file).suffix.lower(), "")
+
+
 def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path]) -> list[str]:
     """Rewrite every asset file path to an absolute one; return those that do not exist."""
     missing = []
@@ -105,9 +113,7 @@ def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path])
             element.file = _asset_file(directory, base, element.file, homes)
             if element.file and not os.path.isfile(element.file):
                 missing.append(element.file)
-    for mesh in spec.meshes:
-        if mesh.file and not mesh.content_type:
-            mesh.content_type = MESH_CONTENT_TYPES.get(Path(mesh.file).suffix.lower(), "")
+    name_mesh_content_types(spec)
     for texture in spec.textures:
         texture.file = _asset_file(texture_dir, base, texture.file, homes)
         texture.cubefiles = [_asset_file(texture_dir, base, f, homes) for f in texture.cubefiles]

@@ -31,7 +31,7 @@ from assembler.files.paths import (
 )
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.authored import Authored
-from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource
+from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource, name_mesh_content_types
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.urdf.document import FORCED_COMPILER, UrdfDocument, read_urdf
 from assembler.urdf.meshes import converted_dir
@@ -175,6 +175,7 @@ def _load(
         add_mimics(spec, document.mimics, shown)
     set_limits(spec, document)
     robosuite_groups(spec)
+    name_mesh_content_types(spec)  # the XML of a cached and an uncached build alike
     exclude_welded_parents(spec)
     balanced = balance_inertias(spec) if balance else []
     unnamed = [j for j in spec.joints if not j.name and j.type != mujoco.mjtJoint.mjJNT_FREE]

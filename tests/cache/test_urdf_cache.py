@@ -5,6 +5,8 @@ the entry, so an edit or a removed conversion is a miss and never a stale model.
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -17,7 +19,7 @@ import assembler
 from assembler.compiler import service
 from assembler.compiler.service import wait_for_writes
 from assembler.urdf.meshes import converted_dir, converter_available, importable
-from tests.conftest import use_private_cache
+from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package, write_stl
 
 SPEC = "name: CachedArm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
@@ -91,3 +93,37 @@ def test_a_converted_mesh_is_a_dependency_of_the_entry(tmp_path: Path) -> None:
     converted.unlink()  # e.g. the cache folder cleaned by hand: the entry's file is gone
     assert _counted(_load) == (0, 1)
     assert converted.is_file()  # converted again
+
+
+CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+
+
+@pytest.mark.parametrize("kind", ["urdf", "mjcf"])
+def test_a_cached_build_writes_the_bytes_of_an_uncached_one(kind: str, tmp_path: Path) -> None:
+    """Found by the hostile-input battery: a URDF robot's cached ``build -o`` lacked the meshes'
+    ``content_type`` that its ``--no-cache`` build has (MuJoCo writes it only for meshes it decoded
+    in the process). Each build runs in a process of its own, as users run them."""
+    if kind == "urdf":
+        _arm(tmp_path, ARM_URDF)
+        spec = tmp_path / "arm.yaml"
+    else:
+        (tmp_path / "meshes").mkdir()
+        (tmp_path / "meshes" / "tet.obj").write_text(TETRAHEDRON_OBJ)
+        (tmp_path / "meshy.xml").write_text(MESH_ARM_MJCF)
+        spec = tmp_path / "meshy.yaml"
+        spec.write_text("name: Meshy\nmjcf: meshy.xml\n")
+        _backdate(tmp_path / "meshes" / "tet.obj", tmp_path / "meshy.xml", spec)
+    written = []
+    for run, flags in enumerate([[], [], ["--no-cache"]]):  # compiled and stored, cached, uncached
+        (tmp_path / f"run{run}").mkdir()
+        done = subprocess.run(
+            [sys.executable, "-c", CLI, "build", str(spec), "--no-base", "-o", "robot.xml", *flags],
+            cwd=tmp_path / f"run{run}",
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
+        assert done.returncode == 0, done.stderr
+        written.append((tmp_path / f"run{run}" / "robot.xml").read_bytes())
+    assert written[0] == written[1] == written[2]
+    assert b"content_type=" in written[0]
