@@ -74,13 +74,13 @@ class MjcfSource:
         return named_joints(self.pristine)
 
 
-def _asset_file(directory: str, base: Path, file: str, homes: Collection[Path]) -> str:
-    """The asset's absolute path; it must stay in the allowed folders (MuJoCo reads it at compile),
-    and it is noted as an input no output may replace."""
+def _asset_file(directory: str, mjcf: Path, file: str, homes: Collection[Path]) -> str:
+    """The absolute path of an asset of the file ``mjcf``; it must stay in the allowed folders (MuJoCo
+    reads it at compile; a refusal names the file), and it is noted as an input no output may replace."""
     if not file:
         return file
-    path = Path(file) if os.path.isabs(file) else base / directory / file
-    confined = str(confine(path, homes, f"{display_path(base)}: asset file ", MjcfError))
+    path = Path(file) if os.path.isabs(file) else mjcf.parent / directory / file
+    confined = str(confine(path, homes, f"{display_path(mjcf)}: asset file ", MjcfError))
     note_inputs([confined])
     return confined
 
@@ -103,20 +103,20 @@ def name_mesh_content_types(spec: mujoco.MjSpec) -> None:
             mesh.content_type = MESH_CONTENT_TYPES.get(Path(mesh.file).suffix.lower(), "")
 
 
-def _absolutize_assets(spec: mujoco.MjSpec, base: Path, homes: Collection[Path]) -> list[str]:
+def _absolutize_assets(spec: mujoco.MjSpec, mjcf: Path, homes: Collection[Path]) -> list[str]:
     """Rewrite every asset file path to an absolute one; return those that do not exist."""
     missing = []
     mesh_dir, texture_dir = spec.meshdir or "", spec.texturedir or ""
     groups = [(spec.meshes, mesh_dir), (spec.hfields, mesh_dir), (spec.skins, mesh_dir)]
     for elements, directory in groups:
         for element in elements:
-            element.file = _asset_file(directory, base, element.file, homes)
+            element.file = _asset_file(directory, mjcf, element.file, homes)
             if element.file and not os.path.isfile(element.file):
                 missing.append(element.file)
     name_mesh_content_types(spec)
     for texture in spec.textures:
-        texture.file = _asset_file(texture_dir, base, texture.file, homes)
-        texture.cubefiles = [_asset_file(texture_dir, base, f, homes) for f in texture.cubefiles]
+        texture.file = _asset_file(texture_dir, mjcf, texture.file, homes)
+        texture.cubefiles = [_asset_file(texture_dir, mjcf, f, homes) for f in texture.cubefiles]
         for file in [texture.file, *texture.cubefiles]:
             if file and not os.path.isfile(file):
                 missing.append(file)
@@ -216,7 +216,7 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name; unnamed joint {unnamed[0]}")
     name_assets_after_files(spec)  # before attaching prefixes the names: MuJoCo derives them at compile
-    missing = _absolutize_assets(spec, path.parent, homes)
+    missing = _absolutize_assets(spec, path, homes)
     if missing:
         kind = not_regular(missing[0])  # a FIFO, a device or a folder is there: say what it is
         if kind is not None:

@@ -130,7 +130,7 @@ def test_mesh_files_outside_are_refused_before_mujoco_reads_them(
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
     assert str(caught.value) == (
-        f"{tmp_path}/specs/meshy.yaml:2:7: mjcf: {tmp_path}/specs/robot: asset file "
+        f"{tmp_path}/specs/meshy.yaml:2:7: mjcf: {tmp_path}/specs/robot/meshy.xml: asset file "
         f"{tmp_path}/outside/tetra.obj {OUTSIDE}"
     )
 
@@ -299,4 +299,20 @@ def test_mjcf_declaring_an_unknown_encoding_is_one_line(write: Write, tmp_path: 
     assert str(caught.value) == (
         f"{tmp_path}/specs/enc.yaml:2:7: mjcf: {tmp_path}/specs/enc.xml: not well-formed XML: "
         "unknown encoding: no-such"
+    )
+
+
+@pytest.mark.parametrize("folder", [".", "robot"], ids=["mjcf-in-the-working-folder", "mjcf-in-a-folder"])
+def test_an_asset_refusal_names_the_mjcf_file_not_its_folder(
+    folder: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Found by the hostile-input battery: the refusal named '.' (the MJCF's folder, the working one)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / folder).mkdir(exist_ok=True)
+    (tmp_path / folder / "meshy.xml").write_text(MESH_MJCF.format(meshdir=".", file="/etc/hostname.obj"))
+    (tmp_path / "meshy.yaml").write_text(f"name: Meshy\nmjcf: {folder}/meshy.xml\n")
+    assert main(["build", "meshy.yaml"]) == 1
+    mjcf = "meshy.xml" if folder == "." else "robot/meshy.xml"
+    assert (
+        capsys.readouterr().err == f"meshy.yaml:2:7: mjcf: {mjcf}: asset file /etc/hostname.obj {OUTSIDE}\n"
     )

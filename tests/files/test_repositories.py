@@ -95,7 +95,7 @@ def test_the_repository_opens_only_the_folders_it_names(write: Write, tmp_path: 
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
     assert str(caught.value) == (
-        f"{spec}:2:7: mjcf: {tmp_path}/lab/assets/arm: asset file {tmp_path}/lab/secrets/tetra.obj is "
+        f"{spec}:2:7: mjcf: {tmp_path}/lab/assets/arm/meshy.xml: asset file {tmp_path}/lab/secrets/tetra.obj is "
         "outside the folders a spec may read (its own folder, the folders its spec repository declares, "
         "the shipped specs and assets, installed packages); pass --allow-path DIR (or set "
         f"ASSEMBLER_ALLOW_PATHS) to allow it, or name its folder in allow of {marker}"
@@ -356,5 +356,6 @@ def test_no_mesh_is_read_from_the_git_folder_whatever_allow_says(write: Write, t
     with pytest.raises(MjcfError) as caught:
         cls(idn=0).check()
     assert str(caught.value) == (
-        f"{spec}:2:7: mjcf: {tmp_path}/lab/assets/arm: asset file {tmp_path}/lab/.git/tetra.obj {GIT_REFUSAL}"
+        f"{spec}:2:7: mjcf: {tmp_path}/lab/assets/arm/meshy.xml: asset file {tmp_path}/lab/.git/tetra.obj "
+        f"{GIT_REFUSAL}"
     )
