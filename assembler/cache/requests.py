@@ -123,7 +123,7 @@ def request_key(request: Mapping[str, Any]) -> str | None:
     }
     try:
         text = json.dumps(material, sort_keys=True, separators=(",", ":"), allow_nan=False)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, RecursionError):  # a value nested too deep is refused later, in a line
         return None
     return hashlib.blake2b(text.encode(), digest_size=20).hexdigest()
 

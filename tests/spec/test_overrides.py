@@ -184,3 +184,20 @@ def test_an_mjcf_override_outside_the_allowed_folders_names_the_override(
         "--set mjcf: /etc/passwd is outside the folders a spec may read"
     )
     assert not (tmp_path / "x.xml").exists()
+
+
+def _nested(depth: int) -> object:
+    value: object = 0.1
+    for _ in range(depth):
+        value = [value]
+    return value
+
+
+@pytest.mark.parametrize("depth", [65, 3000])
+def test_an_override_value_nested_deeper_than_a_spec_file_may_is_one_line(depth: int) -> None:
+    """Found by the hostile-input battery (as --set; here its Python form): a RecursionError before."""
+    with pytest.raises(SpecError) as caught:
+        assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": _nested(depth)}).get_model()
+    assert (
+        str(caught.value) == "override joint_defaults.damping: nesting depth exceeds the limit of 64 levels"
+    )

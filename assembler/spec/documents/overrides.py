@@ -16,6 +16,7 @@ from typing import Any, TypeVar
 from pydantic import BaseModel
 
 from assembler.errors import Location, Problem, SpecError
+from assembler.files.limits import MAX_YAML_DEPTH
 from assembler.files.paths import resolve_model_path
 from assembler.spec.documents.located import LocatedDocument
 from assembler.spec.documents.problems import LoadedSpec, validate
@@ -64,6 +65,23 @@ def parse_path(text: str, label: str = "override ", location: Location | None = 
         raise SpecError(Problem(str(error), location, label + text)) from None
 
 
+def _shallow(value: Any, where: str) -> Any:
+    """``value`` (given in Python), if it nests no deeper than a spec file may
+    (:data:`~assembler.files.limits.MAX_YAML_DEPTH`): deeper, every later step would recurse past
+    Python's limit (a RecursionError, not a line)."""
+    pending = [(value, 1)]
+    while pending:
+        item, depth = pending.pop()
+        if isinstance(item, (list, tuple, dict)):
+            if depth > MAX_YAML_DEPTH:
+                raise SpecError(
+                    Problem(f"nesting depth exceeds the limit of {MAX_YAML_DEPTH} levels", None, where)
+                )
+            children = item.values() if isinstance(item, dict) else item
+            pending += [(child, depth + 1) for child in children]
+    return value
+
+
 def parse_override(text: str, label: str = "override ") -> Override:
     """``PATH=VALUE``, the value read as YAML (``0.2``, ``[0.1, 0.2]``, ``null``, ``{inverse_index: 3}``)."""
     key, sep, raw = text.partition("=")
@@ -83,7 +101,10 @@ def parse_overrides(overrides: Overrides, label: str = "override ") -> list[Over
     if overrides is None:
         return []
     if isinstance(overrides, Mapping):
-        return [Override(parse_path(str(key), label), value, label) for key, value in overrides.items()]
+        return [
+            Override(parse_path(str(key), label), _shallow(value, label + str(key)), label)
+            for key, value in overrides.items()
+        ]
     if isinstance(overrides, str):
         overrides = [overrides]
     return [item if isinstance(item, Override) else parse_override(item, label) for item in overrides]
