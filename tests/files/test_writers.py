@@ -22,7 +22,9 @@ import assembler
 from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
 from assembler.errors import AssemblerError
+from assembler.urdf.meshes import importable
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
+from tests.urdf.fixtures import ARM_URDF, write_package
 
 ACTUATORS = '<mujoco><actuator><position name="act1" joint="joint1" kp="50"/></actuator></mujoco>\n'
 FILES = {
@@ -216,3 +218,19 @@ def test_no_module_writes_a_file_except_through_the_door() -> None:
             if isinstance(node, ast.Call) and _writes(node):
                 found.append(f"{relative}:{node.lineno}: {ast.unparse(node)[:80]}")
     assert found == []
+
+
+@pytest.mark.skipif(not (importable("trimesh") and importable("collada")), reason="needs the urdf extra")
+@pytest.mark.parametrize(
+    "target",
+    ["ros/my_arm/urdf/my_arm.urdf", "ros/my_arm/meshes/cube.stl", "ros/my_arm/meshes/cube.dae"],
+    ids=["the-urdf", "its-stl-mesh", "its-collada-mesh"],
+)
+def test_new_never_writes_over_the_urdf_or_meshes_it_read(
+    target: str, folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write_package(folder / "ros", urdf=ARM_URDF)
+    before = (folder / target).read_bytes()
+    assert main(["new", "ros/my_arm/urdf/my_arm.urdf", "--force", "-o", target]) == 1
+    assert capsys.readouterr().err == INPUT.format(path=target) + "\n"
+    assert (folder / target).read_bytes() == before
