@@ -21,6 +21,7 @@ from assembler.models import PartModel
 from assembler.models.motor_rules import Drive
 from assembler.models.motor_table import MOTORS
 from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.registry.packs import pack_of
 from assembler.spec.schema import JointMotor
 
 
@@ -34,8 +35,8 @@ def _dof_text(cls: type[PartModel]) -> str:
 
 
 def short_path(path: Path) -> str:
-    """A spec file as a user reads it: below the working directory, or ``specs/...`` when shipped,
-    then marked ``(shipped)``."""
+    """A spec file as a user reads it: below the working directory, ``specs/...`` when shipped, then
+    marked ``(shipped)``, or ``PACK:file (pack DISTRIBUTION VERSION)`` when an installed pack's."""
     shipped = shipped_specs_dir().resolve()
     if path.is_relative_to(shipped):
         shown = display_path(path)
@@ -43,6 +44,9 @@ def short_path(path: Path) -> str:
             shown if not Path(shown).is_absolute() else str(Path(shipped.name) / path.relative_to(shipped))
         )
         return f"{short} (shipped)"
+    pack = pack_of(path)
+    if pack is not None:
+        return f"{pack.name}:{path.resolve().relative_to(pack.folder).as_posix()} ({pack.label})"
     return display_path(path)
 
 

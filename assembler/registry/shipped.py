@@ -22,6 +22,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
+from assembler.errors import Problem, RegistryError
 from assembler.spec.spec_files import spec_files
 
 PART_KINDS = ("robot", "base", "gripper")
@@ -65,6 +66,19 @@ def scan(folder: Path) -> dict[tuple[str, str], Path] | None:
     return files
 
 
+def motor_files(folder: Path) -> list[Path]:
+    """The motor spec files of a folder (``kind: motor``), which a part of it may name."""
+    found = []
+    for file in spec_files(folder):
+        try:
+            kinds = _KIND.findall(file.read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError):
+            continue
+        if [kind for _, kind in kinds] == ["motor"]:
+            found.append(file)
+    return found
+
+
 class ShippedIndex:
     """The shipped names whose specs are not read yet, and the one way to read them.
 
@@ -72,18 +86,39 @@ class ShippedIndex:
     class instead of finding neither the name nor the class (the lock is re-entrant: making a spec
     looks up its own name and its parent's)."""
 
-    def __init__(self, files: dict[tuple[str, str], Path], register: Callable[[Sequence[Path]], list[Any]]):
+    def __init__(
+        self,
+        files: dict[tuple[str, str], Path],
+        register: Callable[[Sequence[Path]], list[Any]],
+        conflicts: dict[tuple[str, str], list[str]] | None = None,
+    ):
         self.files = files
         """(family, name) -> the spec file, for each name not made yet."""
         self.register = register
         """Validates and registers spec files, all or nothing (the catalog's ``register_specs``)."""
+        self.conflicts = conflicts or {}
+        """(family, name) -> the sources that each define it (two packs, a pack and the shipped
+        specs): looking it up is an error naming them."""
         self._making: set[tuple[str, str]] = set()
         self._lock = threading.RLock()
 
     def holds(self, family: str, name: str) -> bool:
-        return (family, name) in self.files or (family, name) in self._making
+        key = (family, name)
+        return key in self.files or key in self._making or key in self.conflicts
+
+    def _refuse(self, keys: Sequence[tuple[str, str]]) -> None:
+        problems = [
+            Problem(
+                f"{family} '{name}' is defined by {' and by '.join(self.conflicts[(family, name)])}; "
+                "uninstall one of them, or ask its authors to rename theirs"
+            )
+            for family, name in keys
+        ]
+        if problems:
+            raise RegistryError(problems)
 
     def make(self, family: str, name: str) -> None:
+        self._refuse([key for key in [(family, name)] if key in self.conflicts])
         with self._lock:
             file = self.files.pop((family, name), None)
             if file is None:  # made meanwhile by another thread, or being made by this one
@@ -93,6 +128,7 @@ class ShippedIndex:
                 self.make_all()
 
     def make_all(self) -> None:
+        self._refuse(sorted(self.conflicts))
         with self._lock:
             held = dict(self.files)
             self.files.clear()
