@@ -23,7 +23,7 @@ from assembler.errors import MjcfError
 from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
 from assembler.files.paths import confine, display_path
-from assembler.files.regular import open_regular
+from assembler.files.regular import not_regular, open_regular
 
 FILE_ELEMENTS: tuple[str, ...] = ("include", "model", "flexcomp")
 """Elements whose ``file`` MuJoCo reads while parsing the XML (meshes and textures are read at
@@ -105,6 +105,9 @@ def check_mjcf(path: Path, homes: Collection[Path]) -> list[Path]:
             bases = (main_folder, current.parent, *(main_folder / folder for folder in folders))
             for folder in dict.fromkeys(bases):
                 included = confine(folder / file, homes, f"{shown}: <{element}> file ", MjcfError)
+                kind = not_regular(included)
+                if kind is not None:  # MuJoCo would open it itself: a FIFO would hang the process
+                    raise MjcfError(f"{shown}: <{element}> file {display_path(included)}: {kind}")
                 if included.is_file() and included not in named:
                     named.append(included)
                     note_inputs([included])  # a flexcomp's mesh too, which is not read here

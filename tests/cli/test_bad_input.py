@@ -207,6 +207,8 @@ NOT_FILES = [
     ("folder", ["build", "mjcf.yaml"], "mjcf.yaml:2:7: mjcf: x.xml: {kind}"),
     ("fifo", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
     ("folder", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
+    ("fifo", ["build", "include.yaml"], "include.yaml:2:7: mjcf: include.xml: <include> file x.xml: {kind}"),
+    ("folder", ["build", "include.yaml"], "include.yaml:2:7: mjcf: include.xml: <include> file x.xml: {kind}"),
     ("fifo", ["build", "mesh.yaml"], "mesh.yaml:2:7: mjcf: mesh.xml: asset file x.obj: {kind}"),
     ("folder", ["build", "mesh.yaml"], "mesh.yaml:2:7: mjcf: mesh.xml: asset file x.obj: {kind}"),
     *[(kind, ["new", f"x.{suffix}"], f"x.{suffix}: {{kind}}{NEW_HINT}") for kind in KINDS for suffix in ("xml", "urdf")],
@@ -234,6 +236,10 @@ def test_a_fifo_folder_or_device_for_a_file_says_what_it_is(
     (tmp_path / "urdf.yaml").write_text("name: Arm\nurdf: x.urdf\n")
     (tmp_path / "mesh.yaml").write_text("name: Arm\nmjcf: mesh.xml\n")
     (tmp_path / "mesh.xml").write_text(MESH_MJCF)
+    (tmp_path / "include.yaml").write_text("name: Arm\nmjcf: include.xml\n")
+    (tmp_path / "include.xml").write_text(
+        TWO_LINK_MJCF.replace("</mujoco>", '<include file="x.xml"/></mujoco>')
+    )
     (tmp_path / "scene.yaml").write_text("kind: scene\nname: S\nrobots:\n  - robot: x.yaml\n")
     make, text = KINDS[kind]
     for target in ["x.xml", "x.urdf", "x.obj", "x.yaml"]:
