@@ -22,6 +22,7 @@ from pathlib import Path
 
 from assembler.errors import MjcfError, Problem
 from assembler.files.paths import confine, display_path, is_file
+from assembler.files.regular import not_regular
 from assembler.mjcf.source import GLOBAL_SECTIONS
 from assembler.urdf.meshes import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
 from assembler.urdf.outline import outline
@@ -123,7 +124,13 @@ class _Reader:
             MjcfError,
         )
         if not is_file(file):
-            self.problem(line, f"mesh file not found: {display_path(file)}")
+            kind = not_regular(file)  # a FIFO or a folder: say what it is
+            self.problem(
+                line,
+                f"mesh {display_path(file)}: {kind}"
+                if kind
+                else f"mesh file not found: {display_path(file)}",
+            )
             return None
         return file
 

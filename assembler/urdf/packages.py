@@ -32,6 +32,7 @@ from assembler.cache.key import PACKAGE_VARIABLES
 from assembler.errors import MjcfError
 from assembler.files.extras import install_command
 from assembler.files.paths import confine, display_path, is_file
+from assembler.files.regular import not_regular
 from assembler.files.repositories import MARKER, find_repository
 
 PACKAGE_SCHEME = "package://"
@@ -117,6 +118,10 @@ def not_found_message(uri: str, urdf: Path | None = None) -> str:
         return f"{uri}: expected package://<package>/<path in it>"
     name, inner = parts
     folders = package_folders(name, urdf)
+    for folder in folders:  # something is there that is no file (a FIFO, a folder): say what
+        kind = not_regular(folder / inner)
+        if kind is not None:
+            return f"{uri}: {display_path(folder / inner)}: {kind}"
     if folders:
         return f"{uri}: no file '{inner}' in package '{name}' (looked in {', '.join(map(str, folders))})"
     extra = INSTALL_EXTRAS.get(name)

@@ -17,6 +17,7 @@ from assembler.cli import main
 from assembler.files.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
 from assembler.files.writing import shown
 from tests.conftest import MOBILE_MJCF, TWO_LINK_MJCF
+from tests.urdf.fixtures import ARM_URDF, write_package
 
 ARM = b"name: Arm\nmjcf: twolink.xml\n"
 BASE = b"kind: base\nname: Cart\ntype: mobile\nmjcf: mobile.xml\n"
@@ -314,3 +315,29 @@ def test_a_set_value_is_read_as_a_spec_files_values_are(
     spec.write_bytes(ARM)
     assert main(["build", str(spec), "--set", f"joint_defaults.damping={value}"]) == 1
     assert capsys.readouterr().err == expected + "\n"
+
+
+@pytest.mark.parametrize("kind", ["fifo", "folder"])
+@pytest.mark.parametrize(("mesh", "line"), [("cube.stl", 6), ("cube.dae", 10)])
+def test_a_urdf_mesh_that_is_no_file_says_what_it_is(
+    kind: str,
+    mesh: str,
+    line: int,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Before, 'no file ... in package' (a FIFO or a folder is there)."""
+    monkeypatch.chdir(tmp_path)
+    write_package(tmp_path / "ros", urdf=ARM_URDF)
+    (tmp_path / "arm.yaml").write_text(
+        "name: Arm\nurdf: ros/my_arm/urdf/my_arm.urdf\neef_bodies: {right: tool}\n"
+    )
+    (tmp_path / "ros/my_arm/meshes" / mesh).unlink()
+    make, text = KINDS[kind]
+    make(tmp_path / "ros/my_arm/meshes" / mesh)
+    assert main(["build", "arm.yaml", "--no-base"]) == 1
+    assert capsys.readouterr().err == (
+        f"arm.yaml:2:7: urdf: ros/my_arm/urdf/my_arm.urdf:{line}: mesh package://my_arm/meshes/{mesh}: "
+        f"ros/my_arm/meshes/{mesh}: {text}\n"
+    )
