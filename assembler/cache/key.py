@@ -52,15 +52,18 @@ def code_fingerprint() -> str:
 PACKAGE_VARIABLES = ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH")
 """The environment variables that decide where ``package://NAME`` leads (:mod:`assembler.files.paths`)."""
 
+MENAGERIE_VARIABLES = ("MENAGERIE_ROOT", "MENAGERIE_CACHE_DIR")
+"""The variables that decide where ``menagerie://NAME`` leads (:mod:`assembler.files.menagerie`)."""
+
 
 def resolution_environment() -> dict[str, object]:
-    """What decides which files a build reads besides its spec: the package variables, the Python
-    environment and its import path (an installed package is a package root). Part of every key,
+    """What decides which files a build reads besides its spec: the package and Menagerie variables, the
+    Python environment and its import path (an installed package is a package root). Part of every key,
     so a switched ``ROS_PACKAGE_PATH`` is a miss, never the other copy's model. The import path's
     first entry is left out: it is the script's folder or the working folder, which differ between
     ``assembler`` and ``python -c`` for one environment; relative names are resolved before keying."""
     return {
-        **{name: os.environ.get(name, "") for name in PACKAGE_VARIABLES},
+        **{name: os.environ.get(name, "") for name in (*PACKAGE_VARIABLES, *MENAGERIE_VARIABLES)},
         "prefix": sys.prefix,
         "path": [os.path.abspath(entry) for entry in sys.path[1:]],
     }

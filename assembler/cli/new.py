@@ -1,4 +1,5 @@
-"""``assembler new MODEL_FILE``: write a first spec for a vendor's MJCF or URDF (every guess commented)."""
+"""``assembler new MODEL_FILE``: write a first spec for a vendor's MJCF or URDF (every guess commented),
+or for a MuJoCo Menagerie model by name (``menagerie:NAME[/ENTRY]``, :mod:`assembler.files.menagerie`)."""
 
 from __future__ import annotations
 
@@ -6,6 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from assembler.files import menagerie
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER
 from assembler.importers import write_new_spec
@@ -15,7 +17,11 @@ from assembler.importers.packages import environment, found_packages
 
 def run(args: argparse.Namespace) -> int:
     output = Path(args.output) if args.output else None
-    written, target = write_new_spec(Path(args.model_file), output, args.kind, args.force)
+    model_file = Path(args.model_file)
+    if args.model_file.startswith(menagerie.NEW_PREFIX):  # a Menagerie model by name
+        model_file, served = menagerie.entry_file(args.model_file)
+        print(f"{args.model_file}: {display_path(model_file)} ({served.license}, oid {served.oid[:12]})")
+    written, target = write_new_spec(model_file, output, args.kind, args.force)
     # A package the user has still to declare is found for the check, as it will be once declared.
     pending = [package for package in written.packages if package.declared != "beside the spec"]
     with found_packages(pending):

@@ -21,8 +21,10 @@ from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from assembler.errors import AssemblerError, MissingPackageError, MjcfError, SpecError
+from assembler.files import menagerie
 from assembler.files.extras import install_hint
 from assembler.files.inputs import note_resolution
+from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.regular import not_regular
 from assembler.files.repositories import MARKER, find_repository, git_top
 from assembler.files.variables import restored_after
@@ -212,6 +214,8 @@ def resolve_model_path(reference: str, spec_dir: Path | None) -> str:
     """
     refuse_nul(reference)
     home = spec_dir or Path.cwd()
+    if reference.startswith(MENAGERIE_SCHEME):
+        return reference  # found through the mujoco-menagerie library, at build time
     if reference.startswith(PACKAGE_SCHEME):
         declared = _declared_package_file(reference, home)
         return reference if declared is None else str(declared)
@@ -268,6 +272,9 @@ def locate_model_file(reference: str) -> Path:
                 package,
             )
         path = confine(root / inner, [root], f"{reference}: ", MjcfError)  # before existence: no oracle
+    elif reference.startswith(MENAGERIE_SCHEME):
+        inner_path, folder = menagerie.locate(reference)
+        path = confine(inner_path, [folder], f"{reference}: ", MjcfError)
     else:
         path = Path(reference)  # admitted when its spec was loaded; checked again, it may be a link now
         path = confine(path, homes_of(path.resolve()), "", MjcfError)

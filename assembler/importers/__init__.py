@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Literal
 
 from assembler.errors import AssemblerError
+from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
@@ -87,9 +88,9 @@ def _file_entry(file: ModelFile, spec_path: Path) -> Entry:
             "mjcf_fixes could not cut down to one; a spec's file holds one robot under one root body: "
             "point it at a file of the robot alone"
         )
-    if not spec_reference(file, spec_path.parent).startswith(PACKAGE_SCHEME) and not _below(
-        file.path, spec_path.parent
-    ):
+    if not spec_reference(file, spec_path.parent).startswith(
+        (PACKAGE_SCHEME, MENAGERIE_SCHEME)
+    ) and not _below(file.path, spec_path.parent):
         entry.decide(
             "the file is outside the spec's folder, which a spec may not read by default: move the spec "
             "beside it, declare a spec repository, or pass --allow-path (SECURITY.md)"

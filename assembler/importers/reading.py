@@ -15,6 +15,8 @@ from typing import Literal
 import mujoco
 
 from assembler.errors import MjcfError
+from assembler.files import menagerie
+from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, is_file, package_root
 from assembler.files.regular import not_regular
 from assembler.mjcf.source import MjcfSource, load_mjcf
@@ -34,8 +36,9 @@ class ModelFile:
     path: Path
     format: Format
     reference: str
-    """``package://NAME/...`` when the file lies in an installed Python package, else its absolute path
-    (:func:`spec_reference` makes it relative to the spec)."""
+    """``package://NAME/...`` when the file lies in an installed Python package, ``menagerie://...`` in a
+    MuJoCo Menagerie model folder, else its absolute path (:func:`spec_reference` makes it relative to
+    the spec)."""
     source: MjcfSource
     model: mujoco.MjModel
     balance_inertia: bool
@@ -62,7 +65,7 @@ def python_package_reference(path: Path) -> str | None:
 def spec_reference(model: ModelFile, spec_dir: Path) -> str:
     """The spec's ``mjcf:``/``urdf:`` value: the package reference, or the path relative to the spec's
     folder."""
-    if model.reference.startswith(PACKAGE_SCHEME):
+    if model.reference.startswith((PACKAGE_SCHEME, MENAGERIE_SCHEME)):
         return model.reference
     return Path(os.path.relpath(model.path, spec_dir.resolve())).as_posix()
 
@@ -108,7 +111,7 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
     when it is no package's; an MJCF repaired by ``fixes``), and compiled."""
     path = check_model_path(path)
     fmt = file_format(path)
-    package = python_package_reference(path)
+    package = python_package_reference(path) or menagerie.reference_of(path)
     reference = package or str(path)
     with allowing([] if package else [path.parent]):
         source, model, balanced = _read(path, reference, fmt, fixes)

@@ -10,7 +10,8 @@ root, one line per file, grouped by robot:
 - ``model``: the MJCF or URDF its spec names and every file that includes;
 - ``asset``: the meshes, textures and height fields the assembly names (files MuJoCo reads, not the
   cache's converted copies, which are derived from a ``model`` or ``asset`` file);
-- ``package``: the installed distribution a ``package://`` name resolved to, with its version;
+- ``package``: the installed distribution a ``package://`` name resolved to, with its version, and
+  the MuJoCo Menagerie model a ``menagerie://`` name resolved to, with its git tree id;
 
 and MuJoCo's version at the top. Paths are relative to the root inside the repository,
 ``package://NAME/...`` inside an installed package, ``shipped:...`` for robot-assembler's own
@@ -37,7 +38,9 @@ import mujoco
 from assembler.answers.request import part_origins
 from assembler.cache.dependencies import asset_files
 from assembler.errors import AssemblerError, Problem
+from assembler.files import menagerie
 from assembler.files.cache_location import volatile_folders
+from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import (
     PACKAGE_SCHEME,
     display_path,
@@ -124,13 +127,19 @@ class _Namer:
     def __init__(self, root: Path) -> None:
         self.root = root
         self.packages: dict[str, Path] = {}
+        self.menagerie: dict[str, Path] = {}
+        """Menagerie model name -> its folder, for the models the specs name."""
         self.shipped = {
             folder.name: folder.resolve() for folder in (shipped_specs_dir(), shipped_assets_dir())
         }
 
     def package_of(self, reference: str) -> None:
-        """Note the package a spec's ``package://NAME/...`` reference names."""
-        if reference.startswith(PACKAGE_SCHEME):
+        """Note the package a spec's ``package://NAME/...`` (or Menagerie model a ``menagerie://``)
+        reference names."""
+        if reference.startswith(MENAGERIE_SCHEME):
+            _, model_folder = menagerie.locate(reference)
+            self.menagerie[reference.split("/", 3)[2].split("@")[0]] = model_folder.resolve()
+        elif reference.startswith(PACKAGE_SCHEME):
             name = reference[len(PACKAGE_SCHEME) :].split("/", 1)[0]
             folder = _package_folder(name)
             if folder is not None:
@@ -142,6 +151,10 @@ class _Namer:
         for package, folder in self.packages.items():
             if path.is_relative_to(folder):
                 return f"{PACKAGE_SCHEME}{package}/{path.relative_to(folder).as_posix()}"
+        for model, folder in self.menagerie.items():
+            if path.is_relative_to(folder):
+                oid = (menagerie.oid_now(model) or "")[: menagerie.OID_DIGITS]
+                return f"{MENAGERIE_SCHEME}{model}@{oid}/{path.relative_to(folder).as_posix()}"
         for kind, folder in self.shipped.items():
             if path.is_relative_to(folder):
                 return f"{SHIPPED}{kind}/{path.relative_to(folder).as_posix()}"
@@ -155,6 +168,11 @@ class _Namer:
             package, _, inside = name[len(PACKAGE_SCHEME) :].partition("/")
             folder = _package_folder(package)
             return (folder / inside) if folder is not None else Path(name)
+        if name.startswith(MENAGERIE_SCHEME):
+            try:
+                return menagerie.locate(name)[0]
+            except AssemblerError:
+                return Path(name)  # gone: its digest is None
         if name.startswith(SHIPPED):
             kind, _, inside = name[len(SHIPPED) :].partition("/")
             return self.shipped.get(kind, Path(name)) / inside
@@ -190,6 +208,10 @@ def _robot_lock(robot: RobotModel, namer: _Namer) -> RobotLock:
             locked.files[(kind, name)] = digest
     used = {name.split("/", 3)[2] for _, name in locked.files if name.startswith(PACKAGE_SCHEME)}
     locked.packages = {package: _version(package) for package in sorted(used)}
+    models = {
+        name.split("/", 3)[2].split("@")[0] for _, name in locked.files if name.startswith(MENAGERIE_SCHEME)
+    }
+    locked.packages |= {f"{menagerie.NEW_PREFIX}{model}": menagerie.oid_now(model) or "?" for model in models}
     return locked
 
 
@@ -291,7 +313,10 @@ def drift(lock_path: Path) -> list[Problem]:
         for package, version in robot.packages.items():
             packages.setdefault(package, (version, []))[1].append(robot.name)
     for package, (version, robots) in sorted(packages.items()):
-        now = _version(package) if _package_folder(package) is not None else "not installed"
+        if package.startswith(menagerie.NEW_PREFIX):  # a Menagerie model: its git tree id
+            now = menagerie.oid_now(package[len(menagerie.NEW_PREFIX) :]) or "not served"
+        else:
+            now = _version(package) if _package_folder(package) is not None else "not installed"
         if now != version:
             problems.append(
                 Problem(f"package {package}: {version} in the lock, {now} now; {_affecting(robots)}")
