@@ -208,6 +208,7 @@ NOT_FILES = [
     ("folder", ["build", "mjcf.yaml"], "mjcf.yaml:2:7: mjcf: x.xml: {kind}"),
     ("fifo", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
     ("folder", ["build", "urdf.yaml"], "urdf.yaml:2:7: urdf: x.urdf: {kind}"),
+    *[(kind, ["diff", "x.yaml", "Sparrow7"], "x.yaml: {kind}; give one spec file") for kind in KINDS],
     ("fifo", ["build", "include.yaml"], "include.yaml:2:7: mjcf: include.xml: <include> file x.xml: {kind}"),
     ("folder", ["build", "include.yaml"], "include.yaml:2:7: mjcf: include.xml: <include> file x.xml: {kind}"),
     ("fifo", ["build", "mesh.yaml"], "mesh.yaml:2:7: mjcf: mesh.xml: asset file x.obj: {kind}"),

@@ -15,6 +15,7 @@ import mujoco
 
 from assembler.errors import RegistryError, SpecError, did_you_mean, summarize_names
 from assembler.files.paths import display_path, is_file
+from assembler.files.regular import not_regular
 from assembler.models import PartModel, RobotModel
 from assembler.registry.catalog import PARENTS, class_from_spec
 from assembler.registry.instances import equip
@@ -71,7 +72,10 @@ def load_side(reference: str) -> Side:
     if kind is ArgumentKind.NAME:
         return Side(reference, _registered(reference))
     if kind is ArgumentKind.SPEC_FOLDER or not is_file(path):
-        what = "a folder; give one spec file" if kind is ArgumentKind.SPEC_FOLDER else "no such file"
+        there = not_regular(path)  # a FIFO or a device is said for what it is
+        what = f"{there}; give one spec file" if there is not None else "no such file"
+        if kind is ArgumentKind.SPEC_FOLDER:
+            what = "a folder; give one spec file"
         raise SpecError(f"{display_path(path)}: {what}")
     (loaded,) = load_paths([path], PARENTS)
     return Side(reference, class_from_spec(loaded, register=False))
