@@ -201,9 +201,15 @@ def _writes(node: ast.Call) -> bool:
     if owner == "os" and name == "open":
         flags = ast.unparse(node.args[1]) if len(node.args) > 1 else ""
         return any(flag in flags for flag in ("O_WRONLY", "O_RDWR", "O_CREAT"))
-    if name in ("open", "fdopen"):
-        modes = [*node.args[1:2], *(k.value for k in node.keywords if k.arg == "mode")]
-        return any(isinstance(m, ast.Constant) and set(str(m.value)) & set("wax+") for m in modes)
+    if name in ("open", "fdopen"):  # open(path, "w"), os.fdopen(fd, "w"), path.open("w")
+        modes = [*node.args[:2], *(k.value for k in node.keywords if k.arg == "mode")]
+        return any(
+            isinstance(m, ast.Constant)
+            and isinstance(m.value, str)
+            and set(m.value) <= set("rwxabt+")
+            and bool(set(m.value) & set("wax+"))
+            for m in modes
+        )
     return False
 
 
