@@ -40,13 +40,27 @@ def note_inputs(paths: Iterable[str | os.PathLike[str]]) -> None:
             stat = os.stat(path)
         except (OSError, ValueError):
             continue
-        _read.setdefault((stat.st_dev, stat.st_ino), os.fspath(path))
+        try:
+            where = os.path.abspath(path)  # looked at again later, maybe from another working folder
+        except OSError:  # the working folder is gone
+            where = os.fspath(path)
+        _read.setdefault((stat.st_dev, stat.st_ino), where)
 
 
 def input_at(path: str | os.PathLike[str]) -> str | None:
-    """The input ``path`` is (as it was read), or None when it is none of them."""
+    """The input ``path`` is (as it was read), or None when it is none of them. The input must still
+    be there under the path it was read by: an inode freed by a deleted input and given to a new file
+    is not that input (a long process, a test session, reads and deletes many files)."""
     try:
         stat = os.stat(path)
     except (OSError, ValueError):
         return None
-    return _read.get((stat.st_dev, stat.st_ino))
+    key = (stat.st_dev, stat.st_ino)
+    read_as = _read.get(key)
+    if read_as is None:
+        return None
+    try:
+        again = os.stat(read_as)
+    except (OSError, ValueError):
+        return None
+    return read_as if (again.st_dev, again.st_ino) == key else None

@@ -22,6 +22,7 @@ import assembler
 from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
 from assembler.errors import AssemblerError
+from assembler.files.inputs import input_at, note_inputs
 from assembler.urdf.meshes import importable
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
@@ -240,3 +241,15 @@ def test_new_never_writes_over_the_urdf_or_meshes_it_read(
     assert main(["new", "ros/my_arm/urdf/my_arm.urdf", "--force", "-o", target]) == 1
     assert capsys.readouterr().err == INPUT.format(path=target) + "\n"
     assert (folder / target).read_bytes() == before
+
+
+def test_an_input_is_known_by_its_inode_while_it_is_there_under_its_name(folder: Path) -> None:
+    """A hard link is the input; an inode the input left behind (deleted, its number given to a new
+    file) is not: a long process or a test session must not refuse an unrelated file."""
+    read, link = folder / "read.xml", folder / "link.xml"
+    read.write_text("<mujoco/>\n")
+    note_inputs([read])
+    os.link(read, link)
+    assert input_at(link) == str(read)
+    read.unlink()
+    assert input_at(link) is None
