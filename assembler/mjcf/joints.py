@@ -1,15 +1,34 @@
-"""Reading and writing one scalar joint parameter on an MjSpec joint, whatever MuJoCo's version.
+"""Joints of a part's MjSpec: one parameter read and written whatever MuJoCo's version, which
+attributes the file itself sets, and the joints a spec adds.
+
+Reading and writing one scalar joint parameter on an MjSpec joint, whatever MuJoCo's version.
 
 Since MuJoCo 3.7 ``damping`` and ``stiffness`` are polynomial coefficient arrays (element 0 is the
 value MJCF's attribute sets); ``armature`` and ``frictionloss`` stay scalars.
+
+Which joint attributes an MJCF file sets, by MuJoCo's own default resolution.
+
+robosuite's rule "apply the default only where the model does not set it" needs to know whether
+a joint's damping (say) comes from the file or from MuJoCo's built-in default. MjSpec reports
+resolved values only, so we ask MuJoCo itself: parse the file a second time with an impossible
+sentinel value in the main default class. A joint that still shows the sentinel inherits from
+nothing the author wrote; any other value was set by the author, literally, through its class,
+a nested class or an ancestor's ``childclass`` - exactly as MuJoCo will compile it.
+
+Add a spec's declared joints (and their velocity actuators) to a part's MjSpec, or a free joint.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import xml.etree.ElementTree as ET
+from collections.abc import Iterable, Mapping, Sequence
 
 import mujoco
 import numpy as np
+
+from assembler.errors import MjcfError, summarize_names
+from assembler.mjcf import mujoco_warnings
+from assembler.spec.schema.added_joints import AddedJoint, VelocityActuator
 
 FREE = mujoco.mjtJoint.mjJNT_FREE
 
@@ -39,3 +58,109 @@ def free_joints(joints: Iterable[mujoco.MjsJoint]) -> int:
 def named_joints(mjspec: mujoco.MjSpec) -> list[str]:
     """Names of the spec's joints in MuJoCo's order, free joints excluded."""
     return [joint.name for joint in mjspec.joints if joint.type != FREE]
+
+
+SENTINEL = -7.251e33
+"""A value no author writes; it marks attributes the file leaves to MuJoCo's built-in default."""
+
+SENSED_ATTRIBUTES: tuple[str, ...] = ("frictionloss", "damping", "armature", "stiffness")
+
+
+def _main_joint_default(root: ET.Element) -> ET.Element:
+    default = root.find("default")
+    if default is None:
+        default = ET.SubElement(root, "default")
+    joint = default.find("joint")
+    if joint is None:
+        joint = ET.SubElement(default, "joint")
+    return joint
+
+
+Authored = dict[str, tuple[str, str]]
+"""Attribute -> (how, class name): how is ``literal`` (on the joint element), ``main default``
+(the file's class-less ``<default>``) or ``class`` (a default class, nested class or ``childclass``)."""
+
+
+def authored_attributes(
+    root: ET.Element, mjspec: mujoco.MjSpec, included: Mapping[str, bytes] | None = None
+) -> list[Authored]:
+    """For each joint of ``mjspec`` (in MjSpec order), the attributes the file sets and how.
+
+    ``root`` is the file's parsed XML; it is not modified. ``included`` maps each ``<include file>``
+    value to that file's bytes: the probe is parsed from memory, where MuJoCo cannot open files.
+    """
+    probe_root = ET.fromstring(ET.tostring(root))
+    main_joint = _main_joint_default(probe_root)
+    in_main = {a for a in SENSED_ATTRIBUTES if main_joint.get(a) is not None}
+    for attribute in SENSED_ATTRIBUTES:
+        if attribute not in in_main:
+            main_joint.set(attribute, repr(SENTINEL))
+    probe_xml = ET.tostring(probe_root, encoding="unicode")
+    with mujoco_warnings.collected():  # the file's own parse has shown them
+        probe = mujoco.MjSpec.from_string(probe_xml, include=dict(included or {}))
+
+    literal = {
+        element.get("name"): element.attrib
+        for element in root.iter("joint")
+        if element.get("name") and element.get("joint") is None and element.get("joint1") is None
+    }
+    result: list[Authored] = []
+    for joint, probed in zip(mjspec.joints, probe.joints, strict=True):
+        own = literal.get(joint.name, {})
+        sets: Authored = {}
+        for attribute in SENSED_ATTRIBUTES:
+            if attribute in own:
+                sets[attribute] = ("literal", "")
+            elif attribute in in_main:
+                sets[attribute] = ("main default", "")
+            elif joint_attribute(probed, attribute) != SENTINEL:
+                sets[attribute] = ("class", joint.classname.name)
+        result.append(sets)
+    return result
+
+
+_TYPES = {"slide": mujoco.mjtJoint.mjJNT_SLIDE, "hinge": mujoco.mjtJoint.mjJNT_HINGE}
+
+
+def add_joints(spec: mujoco.MjSpec, joints: Sequence[AddedJoint]) -> None:
+    """Add each joint to its body (default: the root body), then its actuator, in the given order."""
+    for added in joints:
+        body = spec.worldbody.first_body() if added.body is None else spec.body(added.body)
+        if body is None:
+            names = [b.name for b in spec.bodies if b.name and b.name != "world"]
+            raise MjcfError(
+                f"added joint '{added.name}': no body '{added.body}'. Bodies: {summarize_names(names)}"
+            )
+        joint = body.add_joint(
+            name=added.name, type=_TYPES[added.type], axis=list(added.axis), pos=list(added.pos)
+        )
+        joint.armature = added.armature
+        joint.frictionloss = added.frictionloss
+        joint.damping = [added.damping] + [0.0] * (len(joint.damping) - 1)
+        joint.limited = mujoco.mjtLimited.mjLIMITED_TRUE if added.range else mujoco.mjtLimited.mjLIMITED_FALSE
+        if added.range:
+            joint.range = list(added.range)
+        if added.actuator is not None:
+            _add_velocity_actuator(spec, added.name, added.actuator)
+
+
+def add_free_joint(spec: mujoco.MjSpec) -> None:
+    """Give the root body a free joint (it floats); it must have no joint yet."""
+    root = spec.worldbody.first_body()
+    if len(root.joints):
+        names = ", ".join(joint.name or "(unnamed)" for joint in root.joints)
+        raise MjcfError(
+            f"the root body '{root.name}' already has joints ({names}); a free joint must be its only "
+            "joint (a file with a free joint floats already: leave add_free_joint out)"
+        )
+    root.add_freejoint()
+
+
+def _add_velocity_actuator(spec: mujoco.MjSpec, joint: str, declared: VelocityActuator) -> None:
+    actuator = spec.add_actuator(name=declared.name, target=joint, trntype=mujoco.mjtTrn.mjTRN_JOINT)
+    actuator.set_to_velocity(kv=declared.kv)
+    actuator.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    actuator.ctrlrange = list(declared.ctrlrange)
+    if declared.forcerange is not None:
+        actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        actuator.forcerange = list(declared.forcerange)

@@ -28,11 +28,10 @@ from assembler.files.regular import not_regular
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.asset_names import name_assets_after_files
-from assembler.mjcf.attach_compat import refuse_unattachable, settle_default_site_materials
-from assembler.mjcf.authored import Authored, authored_attributes
+from assembler.mjcf.compose import refuse_unattachable, settle_default_site_materials
 from assembler.mjcf.file_check import check_as_mujoco
 from assembler.mjcf.fixes import apply_fixes
-from assembler.mjcf.joints import named_joints
+from assembler.mjcf.joints import Authored, authored_attributes, named_joints
 from assembler.mjcf.refusal import LineMap, original_lines, refusal_line, repaired_lines, same_lines
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.spec.schema.fixes import MjcfFix

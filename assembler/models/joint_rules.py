@@ -16,7 +16,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from assembler.errors import Problem, SpecError, did_you_mean, summarize_names
-from assembler.mjcf.authored import Authored
+from assembler.mjcf.joints import Authored
 from assembler.models.provenance import Provenance
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import JOINT_RULE_ATTRIBUTES, InverseIndexRule, JointDefaults, JointOverride

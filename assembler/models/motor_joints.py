@@ -17,8 +17,7 @@ from collections.abc import Sequence
 import mujoco
 
 from assembler.errors import Problem, RegistryError
-from assembler.mjcf.actuators import MOVING, followers
-from assembler.mjcf.motor_actuators import MotorActuation, add_motor_actuator
+from assembler.mjcf.actuators import MOVING, MotorActuation, add_motor_actuator, followers
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.joint_rules import JointTable, JointValue, SpecProblem, matching_joints, no_match
 from assembler.models.motor_rules import Derived, Drive

@@ -23,7 +23,7 @@ import mujoco
 import numpy as np
 
 from assembler.errors import Problem
-from assembler.mjcf.sizes import scaled_size
+from assembler.mjcf.census import scaled_size
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import BodyScale, GeomFriction

@@ -14,8 +14,7 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
-from assembler.mjcf.added_joints import add_free_joint, add_joints
-from assembler.mjcf.joints import joint_attribute, named_joints
+from assembler.mjcf.joints import add_free_joint, add_joints, joint_attribute, named_joints
 from assembler.mjcf.removal import remove_bodies, remove_free_joints, remove_joints
 from assembler.mjcf.source import MjcfSource
 from assembler.mjcf.structure import root_body_name

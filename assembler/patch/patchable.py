@@ -18,7 +18,7 @@ import mujoco
 import numpy as np
 
 from assembler.errors import AssemblerError
-from assembler.mjcf.sizes import scaled_size
+from assembler.mjcf.census import scaled_size
 from assembler.patch.resolved import Resolved
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
@@ -253,7 +253,7 @@ def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
 
 def _scaled(model: mujoco.MjModel, target: str, element: int, size: float) -> Any:
     """A row of ``target`` scaled by a body's size_scale: of a geom's or site's size, the numbers
-    its type reads (as the compile scales it: :mod:`assembler.mjcf.sizes`)."""
+    its type reads (as the compile scales it: :mod:`assembler.mjcf.census`)."""
     row = getattr(model, target)[element]
     if target in ("geom_size", "site_size"):
         kind = model.geom_type[element] if target == "geom_size" else model.site_type[element]

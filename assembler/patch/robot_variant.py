@@ -34,8 +34,8 @@ import mujoco
 
 from assembler.compiler.service import CompiledModel
 from assembler.compiler.stored import default_store, entry_key, load_entry
+from assembler.mjcf.emit import XmlText
 from assembler.mjcf.keyframe import Keyframe
-from assembler.mjcf.xml_text import XmlText
 from assembler.models import RobotModel
 from assembler.patch.derived import apply_patch
 from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch

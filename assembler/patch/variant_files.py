@@ -25,7 +25,7 @@ import mujoco
 
 from assembler.compiler.compile import compile_and_emit
 from assembler.compiler.service import default_store, entry_key
-from assembler.mjcf.xml_text import XmlText
+from assembler.mjcf.emit import XmlText
 from assembler.models import RobotModel
 from assembler.patch.patchable import NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant

@@ -17,7 +17,7 @@ from typing import TypeVar
 import mujoco
 
 from assembler.errors import AssemblerWarning, SpecError
-from assembler.mjcf.inertia_groups import weighed_by_other_groups
+from assembler.mjcf.census import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.models.collision_colour import colour_collision_geoms
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos

@@ -30,7 +30,7 @@ from assembler.files.paths import (
     package_root,
 )
 from assembler.mjcf import mujoco_warnings
-from assembler.mjcf.authored import Authored
+from assembler.mjcf.joints import Authored
 from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource, name_mesh_content_types
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.urdf.document import FORCED_COMPILER, UrdfDocument, read_urdf

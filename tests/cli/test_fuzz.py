@@ -24,6 +24,7 @@ from hypothesis.configuration import set_hypothesis_home_dir
 
 from assembler.cli import main
 from assembler.files.paths import shipped_specs_dir
+from assembler.models.motor_table import MOTORS
 from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 from assembler.spec.schema import RobotSpec
 from assembler.urdf.packages import package_folders
@@ -275,18 +276,20 @@ def _run_case(
     spec.write_bytes(content)
     out = case / "out"
     out.mkdir()
-    robot = re.search(rb"(?m)^kind: *(base|gripper)", content) is None
+    robot = re.search(rb"(?m)^kind: *(base|gripper|motor)", content) is None  # the others: validate
     argv = (
         ["build", str(spec), "-o", str(out / "robot.xml")] if robot else ["validate", "--compile", str(spec)]
     )
     tables = (REGISTERED_ROBOTS, REGISTERED_BASES, REGISTERED_GRIPPERS)
     snapshots = [dict(table) for table in tables]
+    motors = MOTORS.state()  # a motor spec registers its name too
     try:
         code = main(argv)  # any exception but AssemblerError escapes here and fails the test
     finally:
         for table, snapshot in zip(tables, snapshots, strict=True):
             table.clear()
             table.update(snapshot)
+        MOTORS.restore(motors)
     err = capsys.readouterr().err
     assert code in (0, 1)
     if currently_in_test_context():

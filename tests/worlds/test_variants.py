@@ -17,7 +17,7 @@ import pytest
 import assembler
 from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
-from assembler.mjcf.xml_text import XmlText
+from assembler.mjcf.emit import XmlText
 from assembler.worlds.variants import Grid, VariantPlan, write_variants
 from assembler.worlds.variants.run import counts as variant_counts
 from tests.conftest import use_private_cache
