@@ -33,7 +33,7 @@ from assembler.files.regular import open_regular
 from assembler.files.repositories import MARKER, find_repository
 from assembler.files.variables import restored_after
 from assembler.importers.reading import python_package_reference
-from assembler.urdf.packages import package_folders, split_package_uri
+from assembler.urdf.packages import package_folders, share_reference, split_package_uri
 
 PACKAGE_URI = re.compile(r"""package://[^"'\s<>]+""")
 """A ``package://`` URI as a URDF writes it in an attribute."""
@@ -95,7 +95,7 @@ def _package(urdf: Path, name: str, folder: Path, spec_dir: Path) -> BesidePacka
     shown = f"package://{name} is the folder {display_path(folder)} beside the URDF"
     # A URDF of an installed Python package is named package://..., the same on every machine: a
     # declaration would name this machine's install (a venv inside the checkout: .venv/lib/python3.11/...)
-    if python_package_reference(urdf) is None:
+    if python_package_reference(urdf) is None and share_reference(urdf) is None:
         repository = find_repository(urdf.parent)
         if repository is not None and folder.is_relative_to(repository.root):
             entry = folder.relative_to(repository.root).as_posix()

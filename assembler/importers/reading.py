@@ -22,6 +22,7 @@ from assembler.files.regular import not_regular
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
+from assembler.urdf.packages import share_reference
 
 Format = Literal["mjcf", "urdf"]
 
@@ -36,7 +37,8 @@ class ModelFile:
     path: Path
     format: Format
     reference: str
-    """``package://NAME/...`` when the file lies in an installed Python package, ``menagerie://...`` in a
+    """``package://NAME/...`` when the file lies in an installed Python package or (a URDF) in a ROS
+    package of a ``share/`` tree the spec's ``package://`` resolves to, ``menagerie://...`` in a
     MuJoCo Menagerie model folder, else its absolute path (:func:`spec_reference` makes it relative to
     the spec)."""
     source: MjcfSource
@@ -112,6 +114,8 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
     path = check_model_path(path)
     fmt = file_format(path)
     package = python_package_reference(path) or menagerie.reference_of(path)
+    if package is None and fmt == "urdf":  # a ROS package in a share/ tree (cmeel's example-robot-data)
+        package = share_reference(path)
     reference = package or str(path)
     with allowing([] if package else [path.parent]):
         source, model, balanced = _read(path, reference, fmt, fixes)

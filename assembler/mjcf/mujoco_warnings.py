@@ -31,9 +31,14 @@ def collected() -> Iterator[list[str]]:
 
 
 @contextlib.contextmanager
-def warned(what: str) -> Iterator[None]:
-    """MuJoCo's warnings in the block become :class:`MujocoWarning`s naming ``what``, once each."""
+def warned(what: str) -> Iterator[list[str]]:
+    """MuJoCo's warnings in the block become :class:`MujocoWarning`s naming ``what``, once each; but
+    those starting with a text the block adds to the list it is given (a warning the caller says
+    in its own words, with the file's line)."""
+    said: list[str] = []
     with collected() as messages:
-        yield
+        yield said
     for message in dict.fromkeys(" ".join(message.split()) for message in messages):
+        if message.startswith(tuple(said)) and said:
+            continue
         warnings.warn(f"{what}: MuJoCo warns: {message}", MujocoWarning, stacklevel=3)

@@ -33,7 +33,7 @@ from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.joints import Authored
 from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource, name_mesh_content_types
 from assembler.mjcf.xml_guard import check_mjcf
-from assembler.urdf.document import FORCED_COMPILER, UrdfDocument, read_urdf
+from assembler.urdf.document import FORCED_COMPILER, Mimic, UrdfDocument, read_urdf
 from assembler.urdf.meshes import converted_dir
 from assembler.urdf.packages import find_package_file, not_found_message, resolution_state, split_package_uri
 from assembler.urdf.postprocess import (
@@ -118,7 +118,7 @@ def _ignored(document: UrdfDocument) -> list[str]:
     ]
 
 
-def _notes(document: UrdfDocument, balanced: list[str]) -> tuple[str, ...]:
+def _notes(document: UrdfDocument, balanced: list[str], ignored: dict[Mimic, str]) -> tuple[str, ...]:
     notes = [f"the URDF's compiler {setting} was replaced" for setting in document.overridden]
     notes += _ignored(document)
     if balanced:
@@ -128,7 +128,9 @@ def _notes(document: UrdfDocument, balanced: list[str]) -> tuple[str, ...]:
     notes += [
         f"<mimic> {m.follower} = {m.multiplier:g} * {m.leader} + {m.offset:g} is a joint equality"
         for m in document.mimics
+        if m not in ignored
     ]
+    notes += ignored.values()
     made = [file for file in document.mesh_files if file.parent == converted_dir()]
     converted = [file for file in made if file not in document.renamed]
     if converted:
@@ -169,10 +171,11 @@ def _load(
     before = _stat(path)
     document = read_urdf(path, homes, path.read_bytes())
     # MuJoCo's warnings are said to the user, never appended to MUJOCO_LOG.TXT; when our own check
-    # refuses the same thing (a <mimic> MuJoCo 4 ignores with a warning), the one error is enough.
-    with mujoco_warnings.warned(shown):
+    # says the same thing (a <mimic> MuJoCo 4 ignores with a warning), ours, with the file's line, is enough.
+    with mujoco_warnings.warned(shown) as said:
         spec = _import(document.text, shown)
-        add_mimics(spec, document.mimics, shown)
+        ignored = add_mimics(spec, document.mimics, shown)
+        said += [f"<mimic> on joint '{mimic.follower}' ignored" for mimic in ignored]  # ours has its line
     set_limits(spec, document)
     robosuite_groups(spec)
     name_mesh_content_types(spec)  # the XML of a cached and an uncached build alike
@@ -181,7 +184,8 @@ def _load(
     unnamed = [j for j in spec.joints if not j.name and j.type != mujoco.mjtJoint.mjJNT_FREE]
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name")
-    for line in _ignored(document):  # said once per version of the file, as MuJoCo's own warnings are
+    # said once per version of the file, as MuJoCo's own warnings are
+    for line in [*_ignored(document), *ignored.values()]:
         warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))
     return MjcfSource(
@@ -191,7 +195,7 @@ def _load(
         authored=_authored(spec, document),
         files=files,
         velocity_limits=dict(document.velocity_limits),
-        notes=_notes(document, balanced),
+        notes=_notes(document, balanced, ignored),
     )
 
 

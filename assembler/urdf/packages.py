@@ -86,6 +86,23 @@ def package_folders(name: str, urdf: Path | None = None) -> list[Path]:
     return found
 
 
+def share_reference(path: Path) -> str | None:
+    """``package://NAME/inner/path`` when ``path`` lies in a ``share/NAME`` folder of this Python
+    environment or of ``AMENT_PREFIX_PATH`` (cmeel's ``.../cmeel.prefix/share/example-robot-data/...``)
+    and that folder is the first package ``NAME`` resolves to, as a spec's ``package://`` reads it;
+    else None. Such a reference reads the same file on every machine the package is installed on."""
+    resolved = path.resolve()
+    prefixes = [*_entries("AMENT_PREFIX_PATH"), *_environment_prefixes()]
+    for share in dict.fromkeys(prefix.resolve() / "share" for prefix in prefixes if prefix.is_dir()):
+        if not resolved.is_relative_to(share) or resolved.parent == share:
+            continue
+        name, *inner = resolved.relative_to(share).parts
+        folders = package_folders(name) if ROS_PACKAGE_NAME.match(name) else []
+        if inner and folders and folders[0] == share / name:
+            return f"{PACKAGE_SCHEME}{name}/{'/'.join(inner)}"
+    return None
+
+
 def resolution_state(urdf: Path) -> tuple[object, ...]:
     """Everything :func:`package_folders` reads besides the files: the package variables, the Python
     environment and the packages the spec repository holding ``urdf`` declares. A URDF read with

@@ -1,7 +1,8 @@
 """What a URDF says that MuJoCo's import may lose, written into the imported MjSpec.
 
 - ``<mimic>``: a joint equality ``follower = multiplier * leader + offset`` (MuJoCo's own import
-  drops mimic silently before 4.0 and adds it since; either way the spec ends with exactly one);
+  drops mimic silently before 4.0 and adds it since; either way the spec ends with exactly one); a
+  ``<mimic>`` MuJoCo ignores (of a fixed joint, of itself) is ignored and said in a note;
 - ``<limit lower upper>``: the joint is limited explicitly, so no ``autolimits`` setting of the
   assembly it lands in can unlimit it; ``<limit effort>``: its actuator force range;
 - geoms follow robosuite's convention: ``<visual>`` in group 1 without contacts, ``<collision>``
@@ -24,7 +25,6 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.errors import MjcfError, Problem
 from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
 from assembler.urdf.document import Mimic, UrdfDocument
 
@@ -41,26 +41,25 @@ def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.M
     return None
 
 
-def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None:
-    """One joint equality per ``<mimic>``; a mimic of itself or of a joint that cannot move is an error."""
-    problems = []
+def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> dict[Mimic, str]:
+    """One joint equality per ``<mimic>``; returns a line for each ``<mimic>`` ignored, as MuJoCo's URDF
+    import ignores it (no error): one of a joint of itself, or of a joint that cannot move (Talos'
+    grippers mimic on fixed joints)."""
+    ignored: dict[Mimic, str] = {}
     for mimic in mimics:
         if mimic.leader == mimic.follower:  # MuJoCo's import drops it without a word
-            problems.append(
-                Problem(
-                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics itself; name another joint in "
-                    "its <mimic joint>, or remove the <mimic>"
-                )
+            ignored[mimic] = (
+                f"{shown}:{mimic.line}: <mimic> of joint '{mimic.follower}' is ignored, as MuJoCo's URDF "
+                "import ignores it: the joint mimics itself"
             )
             continue
         joints = {name: spec.joint(name) for name in (mimic.follower, mimic.leader)}
         still = [name for name, joint in joints.items() if joint is None or joint.type not in MOVING]
         if still:
-            problems.append(
-                Problem(
-                    f"{shown}:{mimic.line}: joint '{mimic.follower}' mimics '{mimic.leader}', but "
-                    f"'{still[0]}' is not a revolute, continuous or prismatic joint; fix the URDF's <mimic>"
-                )
+            ignored[mimic] = (
+                f"{shown}:{mimic.line}: <mimic> of joint '{mimic.follower}' (following '{mimic.leader}') is "
+                f"ignored, as MuJoCo's URDF import ignores it: '{still[0]}' is not a revolute, continuous or "
+                "prismatic joint"
             )
             continue
         equality = _joint_equality(spec, mimic.follower, mimic.leader)
@@ -72,8 +71,7 @@ def add_mimics(spec: mujoco.MjSpec, mimics: Sequence[Mimic], shown: str) -> None
         data = list(equality.data)  # past the polynomial, MuJoCo's defaults (as an XML <joint> gets them)
         data[:5] = [mimic.offset, mimic.multiplier, 0.0, 0.0, 0.0]  # polycoef: q1 = c0 + c1 * q2 + ...
         equality.data = data
-    if problems:
-        raise MjcfError(problems)
+    return ignored
 
 
 def set_limits(spec: mujoco.MjSpec, document: UrdfDocument) -> None:

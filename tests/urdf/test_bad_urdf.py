@@ -118,7 +118,6 @@ CASES = [
     pytest.param(NESTED, {}, "", [f"{HEAD}:3: elements nest deeper than the limit of {MAX_URDF_DEPTH} levels; a URDF nests a few levels deep"], id="nested-visuals"),
     pytest.param(urdf(more='  <joint name="j1" type="fixed"><parent link="l0"/><child link="l1"/></joint>\n'), {}, "", [f"{HEAD}:5: a second joint named 'j1' (the first is on line 4); joint names must be unique"], id="two-joints-of-one-name"),
     pytest.param(urdf(more=f'  <link name="l1">{INERTIAL}</link>\n'), {}, "", [f"{HEAD}:5: a second link named 'l1' (the first is on line 3); link names must be unique"], id="two-links-of-one-name"),
-    pytest.param(urdf(joint='<mimic joint="j1"/>'), {}, "", [f"{HEAD}:4: joint 'j1' mimics itself; name another joint in its <mimic joint>, or remove the <mimic>"], id="a-mimic-of-itself"),
 ]
 # fmt: on
 

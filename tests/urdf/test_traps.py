@@ -17,7 +17,7 @@ import pytest
 
 import assembler
 from assembler.cli import main
-from assembler.errors import AssemblerError, MissingPackageError, MjcfError
+from assembler.errors import AssemblerError, AssemblerWarning, MissingPackageError, MjcfError
 from assembler.files.extras import install_command
 from assembler.files.paths import allowing, shipped_specs_dir
 from assembler.models import RobotModel
@@ -191,15 +191,29 @@ def test_mimic_is_added_when_mujoco_drops_it(package: Path) -> None:
 
 
 @NEEDS_CONVERTER
-def test_a_mimic_of_a_joint_that_cannot_move_is_an_error(tmp_path: Path) -> None:
-    text = ARM_URDF.replace('<mimic joint="finger_a_joint"', '<mimic joint="tool_joint"')
+@pytest.mark.parametrize(
+    ("leader", "why"),
+    [
+        ("tool_joint", "'tool_joint' is not a revolute, continuous or prismatic joint"),
+        ("finger_b_joint", "the joint mimics itself"),
+    ],
+)
+def test_a_mimic_mujoco_ignores_is_ignored_with_a_note_naming_its_line(
+    tmp_path: Path, leader: str, why: str
+) -> None:
+    # Talos' grippers mimic on fixed joints: MuJoCo's import ignores such a <mimic>, so does the read
+    text = ARM_URDF.replace('<mimic joint="finger_a_joint"', f'<mimic joint="{leader}"')
     urdf = write_package(tmp_path / "ros", urdf=text)
-    with pytest.raises(MjcfError) as caught:
-        _load(urdf)
-    assert str(caught.value).endswith(
-        f"my_arm.urdf:{MIMIC_JOINT_LINE}: joint 'finger_b_joint' mimics 'tool_joint', but 'tool_joint' is not a revolute, "
-        "continuous or prismatic joint; fix the URDF's <mimic>"
+    with pytest.warns(AssemblerWarning) as caught, allowing([urdf.parent.parent.parent]):
+        source = load_urdf(str(urdf))
+    following = "" if leader == "finger_b_joint" else f" (following '{leader}')"
+    line = (
+        f"my_arm.urdf:{MIMIC_JOINT_LINE}: <mimic> of joint 'finger_b_joint'{following} is ignored, as "
+        f"MuJoCo's URDF import ignores it: {why}"
     )
+    assert [str(w.message) for w in caught if str(w.message).endswith(line)]
+    assert [note for note in source.notes if note.endswith(line)]
+    assert source.new_spec().compile().neq == 0
 
 
 @NEEDS_CONVERTER
