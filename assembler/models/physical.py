@@ -7,10 +7,13 @@ one's value on the same element. Each final value keeps the index of the entry t
 attached, so every name is still the file's own.
 
 Size scaling by S scales, in the body's frame: its geoms (position, size, ``fromto``), meshes
-(their ``scale``), sites, joint anchors, cameras, lights, frames and child bodies' offsets, and
-its inertial frame's position. The mass factor is ``mass_scale`` or S^3; the inertia factor is the
-mass factor times S^2. A body without an ``<inertial>`` gets its mass from its geoms: their
-densities (or masses, where the file gives them) are scaled instead.
+(their ``scale``), sites' positions, joint anchors, cameras, lights, frames and child bodies'
+offsets, and its inertial frame's position. A site moves with its body and keeps its size, which
+nothing in the physics reads (a frame, a marker, an IMU), unless it is a sensor's zone (a touch
+sensor's or a contact sensor's site: :func:`zone_sites`), whose size is scaled with the geoms it
+covers; the patch and MuJoCo Warp batches follow the same rule. The mass factor is ``mass_scale``
+or S^3; the inertia factor is the mass factor times S^2. A body without an ``<inertial>`` gets its
+mass from its geoms: their densities (or masses, where the file gives them) are scaled instead.
 """
 
 from __future__ import annotations
@@ -135,12 +138,46 @@ def _scale_fromto(element: mujoco.MjsGeom | mujoco.MjsSite, factor: float) -> No
         _scale_vector(element, "fromto", factor)
 
 
-def _scale_body(body: mujoco.MjsBody, size: float, mass: float, inertia: float) -> None:
+ZONE_SENSORS: frozenset[int] = frozenset(
+    int(getattr(mujoco.mjtSensor, name))
+    for name in ("mjSENS_TOUCH", "mjSENS_CONTACT")
+    if hasattr(mujoco.mjtSensor, name)
+)
+"""Sensors whose site is a zone (a volume they read contacts in): its size follows a size_scale."""
+
+
+def zone_sites(mjspec: mujoco.MjSpec) -> set[str]:
+    """The sites of ``mjspec`` that are a sensor's zone (:data:`ZONE_SENSORS`)."""
+    site = mujoco.mjtObj.mjOBJ_SITE
+    zones = set()
+    for sensor in mjspec.sensors:
+        if int(sensor.type) in ZONE_SENSORS:
+            zones |= {
+                name
+                for kind, name in ((sensor.objtype, sensor.objname), (sensor.reftype, sensor.refname))
+                if kind == site
+            }
+    return zones
+
+
+def _move_site(site: mujoco.MjsSite, factor: float) -> None:
+    """A site's position scaled, its size kept (a ``fromto`` moves its middle, keeping its length)."""
+    _scale_vector(site, "pos", factor)
+    if not math.isnan(site.fromto[0]):
+        ends = np.asarray(site.fromto, dtype=float).reshape(2, 3)
+        middle, half = ends.mean(axis=0), (ends[1] - ends[0]) / 2
+        site.fromto = np.concatenate([middle * factor - half, middle * factor + half])
+
+
+def _scale_body(body: mujoco.MjsBody, size: float, mass: float, inertia: float, zones: set[str]) -> None:
     if size != 1.0:
-        for element in [*body.geoms, *body.sites]:
+        for element in [*body.geoms, *(s for s in body.sites if s.name in zones)]:
             _scale_vector(element, "pos", size)
             element.size = scaled_size(element.size, int(element.type), size)
             _scale_fromto(element, size)
+        for site in body.sites:
+            if site.name not in zones:
+                _move_site(site, size)
         for group in (body.joints, body.cameras, body.lights, body.frames, body.bodies):
             for element in group:
                 _scale_vector(element, "pos", size)
@@ -161,10 +198,11 @@ def _scale_body(body: mujoco.MjsBody, size: float, mass: float, inertia: float) 
 def apply_physical(mjspec: mujoco.MjSpec, table: PhysicalTable) -> None:
     """Scale the bodies and set the geom frictions ``table`` gives, on a part's unattached spec."""
     scaled_meshes: set[str] = set()
+    zones = zone_sites(mjspec) if table.bodies else set()
     for name in table.bodies:
         body = mjspec.body(name)
         size, mass, inertia = table.factors(name)
-        _scale_body(body, size, mass, inertia)
+        _scale_body(body, size, mass, inertia, zones)
         for geom in body.geoms:
             if geom.type == mujoco.mjtGeom.mjGEOM_MESH and geom.meshname not in scaled_meshes and size != 1.0:
                 scaled_meshes.add(geom.meshname)  # shared meshes have one factor (resolve_physical checks)

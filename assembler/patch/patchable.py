@@ -19,6 +19,7 @@ import numpy as np
 
 from assembler.errors import AssemblerError
 from assembler.mjcf.census import scaled_size
+from assembler.models.physical import ZONE_SENSORS
 from assembler.patch.resolved import Resolved
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
@@ -59,7 +60,8 @@ PATCHABLE: dict[str, tuple[str, ...]] = {
     "geoms[i].friction": ("geom_friction",),
     "init_qpos": ("key_qpos",),
 }
-"""Spec fields -> the ``MjModel`` fields a change of them writes (the home keyframe's row for init_qpos)."""
+"""Spec fields -> the ``MjModel`` fields a change of them writes (the home keyframe's row for init_qpos;
+``site_size`` of a sensor's zone only)."""
 
 DERIVED: tuple[str, ...] = (
     "key_ctrl",
@@ -123,7 +125,17 @@ SCALED_WITH_BODY: tuple[tuple[str, mujoco.mjtObj, tuple[str, ...]], ...] = (
     ("cam_bodyid", mujoco.mjtObj.mjOBJ_CAMERA, ("cam_pos",)),
     ("light_bodyid", mujoco.mjtObj.mjOBJ_LIGHT, ("light_pos",)),
 )
-"""(owner field, element kind, fields scaled by S) for what a size_scale scales in the body's frame."""
+"""(owner field, element kind, fields scaled by S) for what a size_scale scales in the body's frame;
+a site's size only when it is a sensor's zone (``assembler.models.physical``: the compile's rule)."""
+
+
+def _zone_sites(model: mujoco.MjModel) -> set[int]:
+    """The sites of ``model`` that are a sensor's zone (``assembler.models.physical.ZONE_SENSORS``)."""
+    site = mujoco.mjtObj.mjOBJ_SITE
+    zones = np.isin(model.sensor_type, list(ZONE_SENSORS))
+    objects = model.sensor_objid[zones & (model.sensor_objtype == site)]
+    references = model.sensor_refid[zones & (model.sensor_reftype == site)]
+    return {int(i) for i in (*objects, *references)}
 
 
 class NotPatchable(AssemblerError):
@@ -236,13 +248,15 @@ def _body_entries(patch: ModelPatch, model: mujoco.MjModel, base: Resolved, vari
             raise NotPatchable(
                 f"bodies: size_scale of '{name}' scales its meshes (mesh data, not patchable); compile it"
             )
+        zones = _zone_sites(model)
         for parent_field, kind, targets in SCALED_WITH_BODY:
             for element in np.flatnonzero(getattr(model, parent_field) == body):
                 if kind == mujoco.mjtObj.mjOBJ_BODY and element == body:
                     continue  # the world body is its own parent
                 if _owned(model, kind, int(element), prefix):
                     for target in targets:
-                        patch.set(target, int(element), _scaled(model, target, int(element), size))
+                        if target != "site_size" or int(element) in zones:
+                            patch.set(target, int(element), _scaled(model, target, int(element), size))
     for name in {*base.physical.geoms, *variant.physical.geoms}:
         old, new = base.physical.geoms.get(name), variant.physical.geoms.get(name)
         if new is None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 try:
     import mujoco_warp
+    import warp as wp
     from mujoco_warp._src import types as warp_types
 except ImportError as error:  # say how to get it, not only that it is missing
     raise ImportError(
@@ -14,4 +15,4 @@ except ImportError as error:  # say how to get it, not only that it is missing
         "(or pip install 'robot-assembler[warp]')"
     ) from error
 
-__all__ = ["mujoco_warp", "warp_types"]
+__all__ = ["mujoco_warp", "warp_types", "wp"]

@@ -44,6 +44,29 @@ world keeps its own (an unbatched one would hold one world's values for all)."""
 HOME_FIELDS: tuple[str, ...] = ("key_qpos", "key_ctrl")
 """The home keyframe's row: a world's initial state, not a model field of MuJoCo Warp."""
 
+NOMINAL: dict[str, str] = {
+    "dof_length": "MuJoCo Warp holds one dof_length for all worlds (set_const leaves it); it weights "
+    "velocities for sleeping only, so each world keeps the robot's",
+}
+"""Derived fields MuJoCo Warp cannot vary per world but reads for nothing a world's physics needs
+(unless the model sleeps: then a plan changing them is refused): -> why each world keeps the robot's value."""
+
+WHY: dict[str, str] = {
+    "site_size": "a touch or contact sensor's zone, whose size follows its body's size_scale",
+}
+"""Why a variant writes a field, where its name alone does not say."""
+
+SET_CONST_ONLY: tuple[str, ...] = (
+    "dof_length",
+    "actuator_length0",
+    "flexedge_length0",
+    "flexedge_invweight0",
+)
+"""Fields ``mj_setConst`` derives that MuJoCo Warp's ``set_const`` does not (compared between worlds)."""
+
+SLEEP_READS = frozenset({"dof_length"})
+"""Of :data:`NOMINAL`, the fields sleeping reads: refused when the model enables sleep."""
+
 
 @dataclass
 class WorldValues:
@@ -98,16 +121,70 @@ def world_values(model: mujoco.MjModel, patches: Sequence[ModelPatch], fields: S
     return WorldValues(values, qpos, ctrl)
 
 
+def refuse_field(name: str, fields: set[str], batchable: set[str], label: str) -> None:
+    """One line naming a field a world varies that MuJoCo Warp has (``fields``) but cannot vary per
+    world; fields it does not have (``bvh_aabb``, ``dof_M0``) do not reach it."""
+    if name in fields and name not in batchable and name not in HOME_FIELDS:
+        why = f" ({WHY[name]})" if name in WHY else ""
+        raise AssemblerError(
+            f"{label}: varies {name}{why}, which MuJoCo Warp cannot vary per world "
+            "(fields it can vary start with '*' in mujoco_warp's types.Model); "
+            "build such variants as separate models"
+        )
+
+
 def refused_fields(
     patches: Sequence[ModelPatch], fields: set[str], batchable: set[str], labels: Sequence[str]
 ) -> None:
-    """One line naming the first field a world varies that MuJoCo Warp has (``fields``) but cannot vary
-    per world; fields it does not have (``bvh_aabb``, ``dof_M0``) do not reach it."""
+    """:func:`refuse_field` for the first field a world's patch writes that MuJoCo Warp cannot vary."""
     for patch, label in zip(patches, labels, strict=True):
         for name in patch.fields:
-            if name in fields and name not in batchable and name not in HOME_FIELDS:
-                raise AssemblerError(
-                    f"{label}: varies {name}, which MuJoCo Warp cannot vary per world "
-                    "(fields it can vary start with '*' in mujoco_warp's types.Model); "
-                    "build such variants as separate models"
-                )
+            refuse_field(name, fields, batchable, label)
+
+
+def nominal_fields(
+    model: mujoco.MjModel,
+    derived: dict[str, NDArray[np.float64]],
+    fields: set[str],
+    batchable: set[str],
+    label: str,
+) -> dict[str, str]:
+    """The derived fields MuJoCo Warp cannot vary that differ between some worlds (``derived``: field ->
+    those worlds' rows, the CPU patch's): each listed with why it may keep the robot's value
+    (:data:`NOMINAL`), or refused (:func:`refuse_field`)."""
+    sleeps = bool(model.opt.enableflags & getattr(mujoco.mjtEnableBit, "mjENBL_SLEEP", 0))
+    nominal = {}
+    for name, rows in derived.items():
+        same = all(np.allclose(row, getattr(model, name), rtol=1e-12, atol=0) for row in rows)
+        if not same:
+            if name in NOMINAL and not (sleeps and name in SLEEP_READS):
+                nominal[name] = NOMINAL[name]
+            else:
+                refuse_field(name, fields, batchable, label)
+    return nominal
+
+
+def home_controls(
+    model: mujoco.MjModel, qpos: NDArray[np.float64], values: dict[str, NDArray[np.float64]]
+) -> NDArray[np.float64]:
+    """Each world's home controls (``assembler.mjcf.keyframe.home_control``, in arrays): its home
+    position for a position actuator on a joint (clipped to its control range), 0 for the others;
+    ``values``: the worlds' own ``actuator_gainprm``, ``biasprm`` or ``ctrlrange`` where they vary."""
+    n = len(qpos)
+
+    def field(name: str) -> NDArray[np.float64]:
+        return (
+            values[name]
+            if name in values
+            else np.broadcast_to(getattr(model, name), (n, *getattr(model, name).shape))
+        )
+
+    kp, bias1 = field("actuator_gainprm")[:, :, 0], field("actuator_biasprm")[:, :, 1]
+    on_joint = model.actuator_trntype == mujoco.mjtTrn.mjTRN_JOINT
+    holds = on_joint & (kp > 0) & np.isclose(bias1, -kp)
+    joints = np.where(on_joint, model.actuator_trnid[:, 0], 0)
+    target = qpos[:, model.jnt_qposadr[joints]]
+    ranges = field("actuator_ctrlrange")
+    limited = model.actuator_ctrllimited.astype(bool)
+    target = np.where(limited, np.clip(target, ranges[:, :, 0], ranges[:, :, 1]), target)
+    return np.where(holds, target, 0.0)

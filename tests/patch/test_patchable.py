@@ -34,8 +34,9 @@ actuators:
 
 DECLARED_MJCF = TWO_LINK_MJCF.replace(
     '<site name="right_center"', '<light name="lamp" pos="0.1 0 0.6"/>\n      <site name="right_center"'
-)
-"""The two-link arm with a light in its base body, so that scaling the base moves a light too."""
+).replace("  <keyframe>", '  <sensor><touch name="base_touch" site="right_center"/></sensor>\n  <keyframe>')
+"""The two-link arm with a light in its base body, so that scaling the base moves a light too, and a
+touch sensor whose zone is the base's site, so that the site's size is scaled too."""
 
 CASES: list[tuple[str, dict[str, Any]]] = [
     ("Sparrow7", {"joint_defaults.damping": 0.35}),

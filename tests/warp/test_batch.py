@@ -23,6 +23,9 @@ from tests.conftest import TWO_LINK_MJCF  # noqa: E402
 
 Write = Callable[[str, str], Path]
 
+SITE = '<site name="right_center" pos="0.02 0 0.01" size="0.01"/>'
+"""The two-link arm's base site, off the body's origin so that a size_scale moves it."""
+
 PLAN = VariantPlan(
     "Sparrow7",
     fixed=(
@@ -82,18 +85,44 @@ def test_every_world_moves_as_its_variant_does_on_cpu_for_20_steps(batch: WarpBa
         np.testing.assert_allclose(qpos[world], data.qpos, atol=1e-4)
 
 
-def test_a_plan_varying_site_sizes_is_refused_with_the_world_and_field(write: Write) -> None:
-    write("r/twolink.xml", TWO_LINK_MJCF)
+SITED_PLAN = VariantPlan(
+    "Sited",
+    fixed=("bodies=[{match: base, size_scale: 1}]",),
+    grids=(Grid.parse("bodies[0].size_scale=1,1.2"),),
+)
+"""The two-link arm's base (which holds the site 'right_center') at its size and 1.2 times it."""
+
+
+def test_a_site_moves_with_a_size_scale_and_keeps_its_size_on_cpu_and_warp(write: Write) -> None:
+    write("r/twolink.xml", TWO_LINK_MJCF.replace('<site name="right_center" size="0.01"/>', SITE))
     assembler.register_specs(write("r/robot.yaml", "name: Sited\nmjcf: twolink.xml\n"))
-    plan = VariantPlan(
-        "Sited",
-        fixed=("bodies=[{match: base, size_scale: 1}]",),
-        grids=(Grid.parse("bodies[0].size_scale=1,1.2"),),
+    batch = put_variants(SITED_PLAN)
+    plain, scaled = (assembler.assemble("Sited", overrides=o).get_model(cache=False) for o in batch.overrides)
+    site = plain.site("robot0_right_center").id
+    np.testing.assert_allclose(scaled.site_pos[site], 1.2 * plain.site_pos[site])
+    np.testing.assert_array_equal(scaled.site_size[site], plain.site_size[site])
+    assert "site_size" not in batch.varied
+    np.testing.assert_allclose(batch.model.site_pos.numpy()[1][site], scaled.site_pos[site], rtol=1e-6)
+
+
+def test_a_touch_sensors_zone_scales_on_cpu_and_is_refused_on_warp_saying_why(write: Write) -> None:
+    touch = '  <sensor><touch name="pad" site="right_center"/></sensor>\n  <keyframe>'
+    write(
+        "r/twolink.xml",
+        TWO_LINK_MJCF.replace('<site name="right_center" size="0.01"/>', SITE).replace("  <keyframe>", touch),
     )
+    assembler.register_specs(write("r/robot.yaml", "name: Sited\nmjcf: twolink.xml\n"))
+    plain, scaled = (
+        assembler.assemble("Sited", overrides=[*SITED_PLAN.fixed, *more]).get_model(cache=False)
+        for more in ([], ["bodies[0].size_scale=1.2"])
+    )
+    site = plain.site("robot0_right_center").id
+    assert scaled.site_size[site][0] == pytest.approx(1.2 * plain.site_size[site][0])  # a sphere: its radius
     with pytest.raises(AssemblerError) as caught:
-        put_variants(plan)
+        put_variants(SITED_PLAN)
     assert str(caught.value) == (
-        "world 1 (bodies[0].size_scale=1.2): varies site_size, which MuJoCo Warp cannot vary per world "
+        "world 1 (bodies[0].size_scale=1.2): varies site_size (a touch or contact sensor's zone, whose size "
+        "follows its body's size_scale), which MuJoCo Warp cannot vary per world "
         "(fields it can vary start with '*' in mujoco_warp's types.Model); build such variants as separate models"
     )
 
