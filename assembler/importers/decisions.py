@@ -52,30 +52,47 @@ def driven_joints(model: mujoco.MjModel, joints: tuple[str, ...]) -> list[str]:
     return [name for name in joints if name not in followers]
 
 
+SATURATION = 0.05
+"""rad (or m): the position error at which a servo ``new`` adds reaches its joint's effort limit, so its
+stiffness is the limit over this (a load within the limit leaves an error below it)."""
+
+DAMPING_RATIO = 1.0
+"""The servos' damping as a ratio of critical damping at the home pose (MuJoCo's ``dampratio``)."""
+
+
+def _servo_gain(limit: float) -> float:
+    """The stiffness of a servo that reaches ``limit`` at :data:`SATURATION`, to three digits."""
+    return float(f"{limit / SATURATION:.3g}")
+
+
 def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
-    """Motors for a file without actuators: each joint's effort limit as the control range, a guessed
-    one (twice gravity's load) where the file gives none."""
+    """Position servos for a file without actuators, so the robot holds the pose it is given: each
+    joint's stiffness reaches the joint's effort limit (its force range) at :data:`SATURATION`, its
+    damping critical; a guessed limit (twice gravity's load) where the file gives none."""
     driven = driven_joints(file.model, joints)
     if file.model.nu or not driven:
         return None
     data = posed_data(file.model)
     limits = {name: torque_limit(file.model, data, name) for name in driven}
-    declared: list[dict[str, Any]] = [{"match": "*", "type": "motor"}]
-    guessed = [name for name, limit in limits.items() if not limit.from_file]
-    declared += [
-        {"match": n, "type": "motor", "ctrlrange": [-limits[n].value, limits[n].value]} for n in guessed
-    ]
+    declared: list[dict[str, Any]] = []
+    for name, limit in limits.items():
+        servo: dict[str, Any] = {"match": name, "kp": _servo_gain(limit.value), "dampratio": DAMPING_RATIO}
+        if not limit.from_file:
+            servo["forcerange"] = [-limit.value, limit.value]
+        declared.append(servo)
     entry = Entry("actuators", declared).guess(
-        f"the {file.format.upper()} has no actuators: one motor per joint (robosuite's controllers write "
-        "torques), each limited to the joint's effort limit in the file"
+        f"the {file.format.upper()} has no actuators: a position servo per joint, so the robot holds the "
+        f"pose it is given; kp reaches the joint's effort limit (its force range) {SATURATION} rad from the "
+        f"target, damping critical (dampratio {DAMPING_RATIO:g})"
     )
     if len(driven) < len(joints):
         entry.guess(
-            f"{_short([n for n in joints if n not in driven])} follow another joint (URDF <mimic>): no motor"
+            f"{_short([n for n in joints if n not in driven])} follow another joint (URDF <mimic>): no servo"
         )
+    guessed = [name for name, limit in limits.items() if not limit.from_file]
     if guessed:
         entry.decide(
-            f"no effort limit in the file for {_short(guessed)}: their ctrlrange is a guess, twice the "
+            f"no effort limit in the file for {_short(guessed)}: their forcerange is a guess, twice the "
             "torque gravity can load each joint with (arm stretched out); set each joint's torque limit "
             "from the datasheet"
         )
@@ -83,8 +100,8 @@ def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     if motors:
         entry.decide(
             f"the file's effort limits are those of shipped motors ({motors}): a motors: entry per joint, "
-            "e.g. {match: JOINT, motor: NAME, control: torque}, gives each joint its motor's armature and "
-            "limit instead of these motors (docs/motors.md); check that the robot has these motors"
+            "e.g. {match: JOINT, motor: NAME, control: position}, gives each joint its motor's armature and "
+            "limit instead of these servos (docs/motors.md); check that the robot has these motors"
         )
     return entry
 
@@ -111,11 +128,17 @@ def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     return entry.decide("set init_qpos to the pose the robot should start each episode in")
 
 
-def robosuite_entry(file: ModelFile, arm: tuple[str, ...]) -> Entry:
+def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = False) -> Entry:
     """How the arm enters robosuite: standing on a pedestal, its position servos made motors."""
     model, options, entry = file.model, {"stand_in_base": STAND_IN_BASE}, Entry("robosuite", {})
     servos = [a for name, a in _actuated_joints(model).items() if name in arm and is_bridge_servo(model, a)]
-    if servos:
+    if servos_added:
+        options["actuation"] = "torque"
+        entry.guess(
+            "robosuite's controllers write torques: in robosuite each servo above becomes a motor whose "
+            "ctrlrange is its forcerange; as_is keeps the servos"
+        )
+    elif servos:
         options["actuation"] = "torque"
         entry.guess(
             "the arm's actuators are position servos: in robosuite each becomes a motor whose ctrlrange "
@@ -205,7 +228,7 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     )
     actuators = actuator_entry(file, tree.joints)
     entries += [actuators] if actuators else []
-    entries.append(robosuite_entry(file, tree.arm))
+    entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
     return entries
 
 

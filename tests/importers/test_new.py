@@ -80,7 +80,7 @@ def test_new_refuses_to_replace_an_existing_spec_unless_forced(
     assert "name: Twolink" in spec.read_text()
 
 
-def test_a_file_without_actuators_gets_motors_with_guessed_torque_limits_marked_to_decide(
+def test_a_file_without_actuators_gets_servos_with_guessed_torque_limits_marked_to_decide(
     write: Callable[[str, str], Path],
 ) -> None:
     model = write("robots/bare.xml", NO_ACTUATORS)
@@ -98,9 +98,34 @@ def test_a_file_without_actuators_gets_motors_with_guessed_torque_limits_marked_
     mujoco.mj_kinematics(vendor, data)
     bodies = [vendor.body(name).id for name in ("link1", "link2", "right_hand")]
     load = sum(vendor.body_mass[b] * np.linalg.norm(data.xipos[b] - data.xanchor[0]) for b in bodies)
-    low, high = shoulder.ctrlrange
+    low, high = shoulder.forcerange
     assert low == -high and 2 * 9.81 * load <= high <= 1.1 * 2 * 9.81 * load
-    assert compiled.actuator_gaintype[shoulder.id] == mujoco.mjtGain.mjGAIN_FIXED
+    assert compiled.actuator_biastype[shoulder.id] == mujoco.mjtBias.mjBIAS_AFFINE  # a position servo
+    assert compiled.actuator_gainprm[shoulder.id, 0] == pytest.approx(high / 0.05, rel=1e-2)
+
+
+def test_a_robot_new_wrote_holds_its_home_pose_for_a_second_with_ctrl_at_home(
+    write: Callable[[str, str], Path],
+) -> None:
+    model = write("robots/bare.xml", NO_ACTUATORS)
+    spec = model.with_name("bare.yaml")
+    assert _new(model, spec) == 0
+    (cls,) = register_specs(spec)
+    assert np.max(_drift(assembler.create_robot(cls.__name__).get_model())) < 0.1
+
+
+def _drift(model: mujoco.MjModel, seconds: float = 1.0) -> np.ndarray:
+    """Per joint, the largest distance from home over ``seconds`` with each servo's target at home."""
+    data = mujoco.MjData(model)
+    if model.nkey:
+        mujoco.mj_resetDataKeyframe(model, data, 0)
+    home = data.qpos.copy()
+    data.ctrl[:] = home[model.jnt_qposadr[model.actuator_trnid[:, 0]]]
+    worst = np.zeros(model.nq)
+    for _ in range(round(seconds / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+        worst = np.maximum(worst, np.abs(data.qpos - home))
+    return worst
 
 
 def test_a_zero_pose_outside_a_joint_range_is_moved_to_the_middle_of_the_range(
@@ -258,7 +283,7 @@ MIMIC_URDF = """\
 """A one-joint arm with a jaw of two fingers, the second following the first (URDF <mimic>)."""
 
 
-def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
+def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_servo(
     write: Callable[[str, str], Path],
 ) -> None:
     model = write("robots/pincer_arm.urdf", MIMIC_URDF)
@@ -267,12 +292,12 @@ def test_a_urdf_jaw_is_left_out_of_the_arm_and_its_mimic_follower_gets_no_motor(
     fields = yaml.safe_load(spec.read_text())
     assert fields["joint_groups"] == {"right": ["joint1"]}
     assert fields["default_grippers"] == {"right": None}
-    assert "# guess: right_finger_joint follow another joint (URDF <mimic>): no motor" in spec.read_text()
+    assert "# guess: right_finger_joint follow another joint (URDF <mimic>): no servo" in spec.read_text()
     (cls,) = register_specs(spec)
     compiled = assembler.create_robot(cls.__name__).get_model()
     motors = [compiled.actuator(a).name for a in range(compiled.nu)]
     assert motors == ["robot0_joint1", "robot0_left_finger_joint"]
-    assert compiled.actuator("robot0_joint1").ctrlrange.tolist() == [-40.0, 40.0]  # the URDF's effort
+    assert compiled.actuator("robot0_joint1").forcerange.tolist() == [-40.0, 40.0]  # the URDF's effort
 
 
 MESH_URDF = MIMIC_URDF.replace(
