@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import TypeVar
 
 import mujoco
 
@@ -93,6 +94,19 @@ def _built(build: Callable[[], Assembly]) -> Assembly:
     return assembly
 
 
+Answer = TypeVar("Answer")
+
+
+def _on_miss(patched: Callable[[], Answer | None] | None) -> Answer | None:
+    """A cache miss, counted, and answered by ``patched()`` when it can (made without a compile; not
+    stored, see :mod:`assembler.patch.robot_variant`); None: build and compile."""
+    counts.misses += 1
+    answer = patched() if patched is not None else None
+    if answer is not None:
+        counts.patched += 1
+    return answer
+
+
 def compile_assembly(assembly: Assembly, meshes: bool = True) -> CompiledModel:
     """Compile ``assembly`` with its ``home`` keyframe (written into its spec too), reading meshes
     decoded before from the mesh store unless ``meshes`` is False; the model cache is not used."""
@@ -119,10 +133,8 @@ def compile_model(
     model = load_entry(key)
     if model is not None:
         return CompiledModel(model, Keyframe.of(model))
-    counts.misses += 1
-    answer = patched() if patched is not None else None
+    answer = _on_miss(patched)
     if answer is not None:
-        counts.patched += 1
         return answer
     assembly = _built(build)
     recorder = _recorder(assembly)
@@ -163,11 +175,9 @@ def compile_xml(
     if stored is not None:
         counts.hits += 1
         return None, stored
-    counts.misses += 1
-    answer = patched() if patched is not None else None
-    if answer is not None:
-        counts.patched += 1
-        return answer
+    answered = _on_miss(patched)
+    if answered is not None:
+        return answered
     assembly = _built(build)
     recorder = _recorder(assembly)
     model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=meshes)
