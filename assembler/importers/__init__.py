@@ -23,6 +23,7 @@ from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
 from assembler.importers.decisions import gripper_entries, robot_entries
 from assembler.importers.entries import Entry, spec_text
+from assembler.importers.legged import legged_entries
 from assembler.importers.naming import camel_case, free_name, name_source
 from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside
 from assembler.importers.reading import (
@@ -145,9 +146,13 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> New
         *([scene_entry(cut)] if cut is not None else []),
     ]
     tree = read_tree(file.model, hand=chosen == "gripper")
-    entries += gripper_entries(file, tree) if chosen == "gripper" else robot_entries(file, tree)
+    if chosen == "gripper":
+        entries += gripper_entries(file, tree)
+    else:
+        entries += legged_entries(file, tree) if tree.limbs is not None else robot_entries(file, tree)
     if chosen == "robot" and kind is None:
-        entries[0].guess(f"a robot arm: {why}; a hand: assembler new --kind gripper")
+        what = "a robot with feet" if tree.limbs is not None else "a robot arm"
+        entries[0].guess(f"{what}: {why}; a hand: assembler new --kind gripper")
     return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages))
 
 

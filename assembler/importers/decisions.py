@@ -161,16 +161,20 @@ def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = 
     return entry
 
 
+def balance_entry(file: ModelFile) -> list[Entry]:
+    """``balance_inertia: true`` when MuJoCo refused the URDF's inertias until balanced."""
+    if not file.balance_inertia:
+        return []
+    return [
+        Entry("balance_inertia", True).guess(
+            "MuJoCo refuses this URDF's inertias (A + B >= C violated): balanced as its balanceinertia would"
+        )
+    ]
+
+
 def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     """The fields of an arm's spec after its name and file."""
-    entries = []
-    if file.balance_inertia:
-        entries.append(
-            Entry("balance_inertia", True).guess(
-                "MuJoCo refuses this URDF's inertias (A + B >= C violated): balanced as its "
-                "balanceinertia would"
-            )
-        )
+    entries = balance_entry(file)
     entries.append(
         Entry("morphology", "manipulator").guess(
             f"one arm of {len(tree.arm)} joints; a bimanual robot needs arm_type: bimanual and a left arm "

@@ -10,6 +10,8 @@ from dataclasses import dataclass
 
 import mujoco
 
+from assembler.importers.limbs import Limbs, read_limbs
+
 FINGER_WORDS = re.compile(r"finger|gripper|jaw|claw|knuckle|thumb|grip", re.IGNORECASE)
 """Joint names of a jaw or fingers (robosuite's grippers and most vendors' files name them so)."""
 
@@ -46,6 +48,9 @@ class Tree:
     eef_by_name: bool
     """True when the end-effector body was found by its name, False when it is the last arm link."""
     grip_site: str | None
+    limbs: Limbs | None = None
+    """A legged robot's feet, legs and arms (then ``arm`` is its right arm, if any); None for a robot
+    without feet (an arm, a wheeled base)."""
 
 
 def _name(model: mujoco.MjModel, kind: mujoco.mjtObj, index: int) -> str:
@@ -122,6 +127,9 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
         every = tuple(names.values())
         return Tree(every, (), every, (), (), (), _name(model, mujoco.mjtObj.mjOBJ_BODY, root), False, site)
     base = [j for j in joints if int(model.jnt_bodyid[j]) in roots]
+    legged = _legged_tree(model, joints, names, roots, base)
+    if legged is not None:
+        return legged
     fingers = _finger_joints(model, [j for j in joints if j not in base])
     parts = {
         part: [j for j in joints if j not in base and j not in fingers and words.search(names[j])]
@@ -144,4 +152,33 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
         eef_body=_name(model, mujoco.mjtObj.mjOBJ_BODY, eef),
         eef_by_name=by_name,
         grip_site=_grip_site(model, eef),
+    )
+
+
+def _legged_tree(
+    model: mujoco.MjModel, joints: list[int], names: dict[int, str], roots: list[int], base: list[int]
+) -> Tree | None:
+    """The tree of a robot with feet (:mod:`~assembler.importers.limbs`), or None. Fingers are the
+    joints named so (each hand's own: no subtree of both hands is taken for a jaw)."""
+    root = max(roots, key=lambda top: (sum(int(model.body_jntnum[b]) for b in _subtree(model, top)), -top))
+    fingers = [j for j in joints if FINGER_WORDS.search(names[j])]
+    head = [j for j in joints if j not in fingers and PART_WORDS["head"].search(names[j])]
+    limbs = read_limbs(model, root, skip={*base, *fingers, *head})
+    if limbs is None:
+        return None
+    told = {*limbs.legs, *(n for arm in limbs.arms.values() for n in arm)}
+    told |= {names[j] for j in (*base, *fingers, *head)}
+    torso = [names[j] for j in joints if names[j] not in told]  # a waist, a spine, what no limb holds
+    eef = limbs.hands.get("right")
+    return Tree(
+        joints=tuple(names.values()),
+        arm=limbs.arms.get("right", ()),
+        fingers=tuple(names[j] for j in fingers),
+        base=tuple(names[j] for j in base),
+        torso=tuple(torso),
+        head=tuple(names[j] for j in head),
+        eef_body=eef or "",
+        eef_by_name=False,
+        grip_site=_grip_site(model, model.body(eef).id) if eef else None,
+        limbs=limbs,
     )

@@ -14,6 +14,7 @@ from assembler.models.manipulator import (
     HumanoidModel,
     HumanoidUpperBodyModel,
     LeggedManipulatorModel,
+    LeggedModel,
     ManipulatorModel,
 )
 from assembler.models.part import PartModel
@@ -25,6 +26,7 @@ MORPHOLOGY_CLASSES: dict[str, type[RobotModel]] = {
     "legged_manipulator": LeggedManipulatorModel,
     "humanoid": HumanoidModel,
     "humanoid_upper_body": HumanoidUpperBodyModel,
+    "legged": LeggedModel,
 }
 """The model class each robot spec's ``morphology`` becomes a subclass of."""
 
@@ -47,6 +49,7 @@ __all__ = [
     "HumanoidUpperBodyModel",
     "LegBaseModel",
     "LeggedManipulatorModel",
+    "LeggedModel",
     "ManipulatorModel",
     "MobileBaseModel",
     "MountModel",

@@ -236,3 +236,21 @@ class HumanoidUpperBodyModel(ManipulatorModel):
     """An upper-body humanoid: two arms with end-effectors, torso and head, no legs."""
 
     in_registry = False
+
+
+class LeggedModel(ManipulatorModel):
+    """A legged robot without arms (a quadruped, a biped): it stands on its ``feet``, has no end effector
+    and takes no gripper."""
+
+    in_registry = False
+
+    def _name_problems(self, prepared: PreparedPart) -> list[Problem]:
+        check = self.name_check(prepared)
+        for index, foot in enumerate(self.spec.feet):
+            check.body(FieldPath(("feet", index)), foot)
+        return [*super()._name_problems(prepared), *check.problems]
+
+    @property
+    def feet(self) -> list[str]:
+        """The bodies the robot stands on (prefixed)."""
+        return [self.naming_prefix + foot for foot in self.spec.feet]

@@ -60,8 +60,11 @@ def family_of(spec_class: type[PartModel]) -> str:
 
 def offered(spec_class: type[PartModel]) -> bool:
     """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
-    ``robosuite.enabled: false``."""
-    return not issubclass(spec_class, ManipulatorModel) or spec_class.spec.robosuite.enabled
+    ``robosuite.enabled: false`` or it has no arms (``morphology: legged``: robosuite's robots are
+    manipulators)."""
+    if not issubclass(spec_class, ManipulatorModel):
+        return True
+    return spec_class.spec.robosuite.enabled and bool(spec_class.spec.arms)
 
 
 def registered_class(family: str, name: str) -> type | None:

@@ -18,7 +18,9 @@ from assembler.spec.schema.joints import JointDefaults
 from assembler.spec.schema.parts import Name, PartSpec
 from assembler.spec.schema.robosuite import RobosuiteOptions
 
-Morphology = Literal["manipulator", "legged_manipulator", "humanoid", "humanoid_upper_body"]
+Morphology = Literal["manipulator", "legged_manipulator", "humanoid", "humanoid_upper_body", "legged"]
+ARMLESS: tuple[str, ...] = ("legged",)
+"""Morphologies without arms: a quadruped or a biped standing on ``feet``, no end effector, no gripper."""
 Arm = Literal["right", "left"]
 GROUPS: tuple[str, ...] = ("torso", "head", "legs", "base")
 """Body-part groups besides the arms, in robosuite's order of precedence."""
@@ -89,7 +91,11 @@ class RobotSpec(PartSpec):
     """What this document describes; robot specs may leave it out."""
 
     morphology: Morphology = "manipulator"
-    """The model class the spec becomes: a manipulator, legged manipulator, or (upper-body) humanoid."""
+    """The model class the spec becomes: a manipulator, legged manipulator, (upper-body) humanoid, or a
+    legged robot without arms (a quadruped, a biped: `feet`, no end effector, no gripper)."""
+
+    feet: list[str] = Field(default_factory=list)
+    """The bodies a legged robot stands on, as named in the MJCF (its feet or lowest leg links)."""
 
     arm_type: Literal["single", "bimanual"] = "single"
     """One arm (right) or two (right and left); humanoids are always bimanual."""
@@ -153,16 +159,25 @@ class RobotSpec(PartSpec):
         for field in ("eef_bodies", "default_grippers", "gripper_mount"):
             extra = sorted(set(getattr(self, field)) - set(arms))
             if extra:
-                raise ValueError(
-                    f"{field} names arm '{extra[0]}', but a {self.arm_type} robot has {', '.join(arms)}"
+                has = (
+                    f"a {self.arm_type} robot has {', '.join(arms)}"
+                    if arms
+                    else f"a {self.morphology} robot has no arms"
                 )
+                raise ValueError(f"{field} names arm '{extra[0]}', but {has}")
         if self.morphology in ("humanoid", "humanoid_upper_body") and self.arm_type != "bimanual":
             raise ValueError(f"a {self.morphology} has two arms: set arm_type: bimanual")
+        if self.feet and self.morphology not in ("legged", "legged_manipulator", "humanoid"):
+            raise ValueError(
+                f"feet: a {self.morphology} has no legs; set morphology: legged for a legged robot"
+            )
         return self
 
     @property
     def arms(self) -> tuple[Arm, ...]:
-        """The arms, right first."""
+        """The arms, right first; none for a morphology without arms."""
+        if self.morphology in ARMLESS:
+            return ()
         return ("right",) if self.arm_type == "single" else ("right", "left")
 
     def eef_body(self, arm: str) -> str:

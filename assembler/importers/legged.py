@@ -1,0 +1,118 @@
+"""What ``assembler new`` writes for a robot with feet (:mod:`~assembler.importers.limbs`): a legged
+robot without arms (``morphology: legged``), a humanoid (two arms), or a legged manipulator (one arm);
+floating on its own feet, no gripper guessed onto any limb."""
+
+from __future__ import annotations
+
+from assembler.importers.decisions import NO_RULES, actuator_entry, balance_entry, init_qpos_entry
+from assembler.importers.entries import Entry
+from assembler.importers.reading import ModelFile
+from assembler.importers.tree import FREE, Tree
+
+
+def _short(names: tuple[str, ...] | list[str], limit: int = 4) -> str:
+    shown = ", ".join(names[:limit])
+    return shown + (f" and {len(names) - limit} more" if len(names) > limit else "")
+
+
+def _morphology(tree: Tree) -> tuple[Entry, list[str]]:
+    assert tree.limbs is not None
+    arms = [side for side in ("right", "left") if tree.limbs.arms.get(side)]
+    feet = (
+        f"{len(tree.limbs.feet)} feet ({_short(tree.limbs.feet)}): leaf bodies well below the root, each "
+        "at the end of a leg"
+    )
+    if not arms:
+        return Entry("morphology", "legged").guess(f"{feet}, and no joint that is no leg's: no arms"), arms
+    if len(arms) == 2:
+        how = "by their names" if tree.limbs.sides_by_name else "by the side of the robot each lies on"
+        entry = Entry("morphology", "humanoid").guess(f"{feet}; two arms, told right and left {how}")
+        return entry, arms
+    return Entry("morphology", "legged_manipulator").guess(f"{feet}; one arm"), arms
+
+
+def _free_joint(file: ModelFile) -> list[Entry]:
+    model = file.model
+    if any(int(model.jnt_type[j]) == FREE for j in range(model.njnt)):
+        return []
+    root = next(b for b in range(1, model.nbody) if model.body_parentid[b] == 0)
+    if model.body_jntnum[root]:
+        return []
+    what = "a URDF cannot declare one" if file.format == "urdf" else "the file gives its root none"
+    return [
+        Entry("add_free_joint", True).guess(
+            f"a legged robot stands on its own feet: its root gets a free joint ({what}); false welds it"
+        )
+    ]
+
+
+def legged_entries(file: ModelFile, tree: Tree) -> list[Entry]:
+    """The fields of a legged robot's spec after its name and file."""
+    limbs = tree.limbs
+    assert limbs is not None
+    morphology, arms = _morphology(tree)
+    entries = [*balance_entry(file), morphology]
+    if len(arms) == 2:
+        entries.append(Entry("arm_type", "bimanual").guess("a humanoid has two arms"))
+    entries += _free_joint(file)
+    entries.append(
+        Entry("feet", list(limbs.feet)).guess("the bodies the robot stands on: the ends of its legs")
+    )
+    if arms:
+        entries.append(
+            Entry("eef_bodies", {side: limbs.hands[side] for side in arms}).guess(
+                "the body at the end of each arm, where its branches (fingers) meet"
+            )
+        )
+    groups: dict[str, list[str]] = {"legs": list(limbs.legs)}
+    for part in ("torso", "head", "base"):
+        if getattr(tree, part):
+            groups[part] = list(getattr(tree, part))
+    for side in arms:
+        groups[side] = list(limbs.arms[side])
+    joints = Entry("joint_groups", groups).guess(
+        "legs: the joints on the way to one foot; torso: what moves several limbs at once (a waist, a "
+        "spine); head: joints named head or neck" + ("; arms: the other joints, by side" if arms else "")
+    )
+    if tree.fingers:
+        joints.decide(
+            f"{_short(tree.fingers)} move fingers or a jaw of this file: in no group, so that no arm "
+            "controller drives them; list them under their arm's side if it should"
+        )
+    entries.append(joints)
+    if arms:
+        has_hands = (
+            "the file's hands (fingers or jaws) are its own" if tree.fingers else "no gripper is guessed"
+        )
+        entries.append(
+            Entry("default_grippers", dict.fromkeys(arms)).guess(
+                f"{has_hands}: no gripper is added to an arm of a legged robot; any registered gripper "
+                "(assembler list grippers)"
+            )
+        )
+    pose = init_qpos_entry(file, tree.joints)
+    if pose is not None:
+        pose.decide(
+            "a legged robot stands on a floor: check that this pose stands (assembler render) and that "
+            "its feet reach the floor from the root's height in the file"
+        )
+        entries.append(pose)
+    entries.append(
+        Entry("joint_defaults", dict(NO_RULES)).guess(
+            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
+            "rules"
+        )
+    )
+    actuators = actuator_entry(file, tree.joints)
+    entries += [actuators] if actuators else []
+    if arms:
+        entries.append(
+            Entry("robosuite", {"enabled": False}).decide(
+                "robosuite's legged robots stand on a legged base its tasks were made for; true to try it "
+                "in robosuite's environments"
+            )
+        )
+    return entries
+
+
+__all__ = ["legged_entries"]
