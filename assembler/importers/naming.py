@@ -13,6 +13,12 @@ GENERIC_STEMS = frozenset({"robot", "model", "main", "scene", "index", "urdf", "
 MUJOCO_UNNAMED = "MuJoCo Model"
 """The model name MuJoCo gives a file whose ``<mujoco>`` has no ``model`` attribute."""
 
+GENERIC_NAMES = frozenset(
+    {MUJOCO_UNNAMED.lower(), "physics", "robot", "model", "default", "main", "scene", "urdf", "plane"}
+)
+"""Model names that say nothing about the robot (pybullet's ``pr2_gripper.urdf`` is
+``<robot name="physics">``): the file name is used instead."""
+
 
 def camel_case(text: str) -> str:
     """``so101_new_calib`` -> ``So101NewCalib``: words joined, each capitalized, digits kept."""
@@ -24,9 +30,10 @@ def camel_case(text: str) -> str:
 
 
 def name_source(model_name: str, path: Path, scene: bool = False) -> str:
-    """What the name is made from: the file's model name, else its stem, else its folder's name (a
+    """What the name is made from: the file's model name unless it is a generic word, else its stem, else
+    its folder's name (a
     task scene's stem names the task: gymnasium-robotics' ``fetch/reach.xml`` is the Fetch)."""
-    if model_name and model_name != MUJOCO_UNNAMED:
+    if model_name and model_name.strip().lower() not in GENERIC_NAMES:
         return model_name
     if not scene and path.stem.lower() not in GENERIC_STEMS:
         return path.stem

@@ -14,6 +14,7 @@ vanishes into the world) unless told otherwise. So before MuJoCo sees the text w
 
 from __future__ import annotations
 
+import math
 import os
 import xml.etree.ElementTree as ET
 from collections.abc import Collection
@@ -75,9 +76,50 @@ class UrdfDocument:
     efforts: dict[str, float] = field(default_factory=dict)
     ignored: list[tuple[str, int]] = field(default_factory=list)
     """``(tag, line)`` of each child of ``<mujoco>`` that neither MuJoCo's import nor we read."""
+    discarded: list[str] = field(default_factory=list)
+    """One line per ``<visual>`` left out because MuJoCo could not compile it (a size that is not
+    positive), which MuJoCo's own import never compiles (it discards visuals)."""
 
 
 MESH_PATHS: tuple[str, ...] = ("link/visual/geometry/mesh", "link/collision/geometry/mesh")
+
+SIZE_ATTRIBUTES: dict[str, tuple[str, ...]] = {
+    "sphere": ("radius",),
+    "box": ("size",),
+    "cylinder": ("radius", "length"),
+    "capsule": ("radius", "length"),
+}
+"""The size attributes of each URDF shape."""
+
+
+def _bad_size(visual: ET.Element) -> str | None:
+    """``radius="0.0"`` for a visual whose shape has a size that is not a positive number, else None."""
+    for shape in visual.findall("geometry/*"):
+        for attribute in SIZE_ATTRIBUTES.get(shape.tag, ()):
+            text = shape.get(attribute, "")
+            try:
+                values = [float(v) for v in text.split()]
+            except ValueError:
+                continue  # MuJoCo's import says what it cannot read
+            if any(not math.isfinite(v) or v <= 0 for v in values):
+                return f'<{shape.tag} {attribute}="{text}">'
+    return None
+
+
+def _discard_bad_visuals(root: ET.Element, lines: list[int], shown: str, document: UrdfDocument) -> None:
+    """Leave out each ``<visual>`` of a size MuJoCo cannot compile (pybullet's Laikago marks its toes
+    with ``<sphere radius="0.0"/>``), saying so: MuJoCo's own import discards visuals, so it loads."""
+    visuals = [(link, visual) for link in root.findall("link") for visual in link.findall("visual")]
+    for (link, visual), line in zip(visuals, lines, strict=True):
+        bad = _bad_size(visual)
+        if bad is not None:
+            link.remove(visual)
+            document.discarded.append(
+                f"{shown}:{line}: the <visual> of link '{link.get('name')}' is {bad}, not a positive size: "
+                "left out, as MuJoCo's URDF import leaves out every visual"
+            )
+
+
 """Where the meshes MuJoCo reads sit (meshes of ``<gazebo>`` and other tool sections are left alone)."""
 
 
@@ -210,7 +252,9 @@ def _extension(root: ET.Element, document: UrdfDocument) -> tuple[ET.Element, st
 def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
     """The URDF at ``path`` (its bytes ``data``, already checked) made ready for MuJoCo."""
     shown = display_path(path)
-    found = outline(data, shown, (*MESH_PATHS, "joint"))  # limits and repeated names, before a tree is built
+    found = outline(
+        data, shown, (*MESH_PATHS, "joint", "link/visual")
+    )  # limits and repeated names, before a tree is built
     try:
         root = ET.fromstring(data)
     except ET.ParseError as error:
@@ -233,6 +277,7 @@ def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
     if reader.problems:
         raise MjcfError(reader.problems)
     _joint_facts(root, reader.lines["joint"], document)
+    _discard_bad_visuals(root, reader.lines["link/visual"], shown, document)
     document.mujoco_element = extension
     document.ignored = [(tag, line) for tag, line in found.extension if tag not in EXTENSION_SECTIONS]
     document.text = ET.tostring(root, encoding="unicode")

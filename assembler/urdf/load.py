@@ -131,6 +131,7 @@ def _notes(document: UrdfDocument, balanced: list[str], ignored: dict[Mimic, str
         if m not in ignored
     ]
     notes += ignored.values()
+    notes += document.discarded
     made = [file for file in document.mesh_files if file.parent == converted_dir()]
     converted = [file for file in made if file not in document.renamed]
     if converted:
@@ -185,7 +186,7 @@ def _load(
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name")
     # said once per version of the file, as MuJoCo's own warnings are
-    for line in [*_ignored(document), *ignored.values()]:
+    for line in [*_ignored(document), *ignored.values(), *document.discarded]:
         warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))
     return MjcfSource(

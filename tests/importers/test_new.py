@@ -388,3 +388,14 @@ def test_a_package_beside_a_urdf_of_an_installed_python_package_is_exported_even
     monkeypatch.setenv("ROS_PACKAGE_PATH", str(folder))  # as printed
     (cls,) = register_specs(spec)
     assert assembler.create_robot(cls.__name__).get_model().nmesh == 1
+
+
+@pytest.mark.parametrize("generic", ["physics", "Robot", "MuJoCo Model"])
+def test_a_generic_model_name_gives_way_to_the_file_name(
+    write: Callable[[str, str], Path], generic: str
+) -> None:
+    # pybullet's pr2_gripper.urdf is <robot name="physics">
+    model = write("robots/pr2_arm.xml", TWO_LINK_MJCF.replace('model="twolink"', f'model="{generic}"'))
+    spec = model.with_name("pr2_arm.yaml")
+    assert _new(model, spec) == 0
+    assert yaml.safe_load(spec.read_text())["name"] == "Pr2Arm"

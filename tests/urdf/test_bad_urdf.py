@@ -283,3 +283,33 @@ def test_mujoco_extensions_a_urdf_gives_that_nothing_reads_are_said(
     ]
     model = mujoco.MjModel.from_xml_path("out.xml")
     assert model.opt.timestep == 0.001 and model.nu == 0  # <option> honoured, the motor not added
+
+
+@pytest.mark.filterwarnings("default::assembler.errors.AssemblerWarning")  # shown as the CLI shows it
+@pytest.mark.parametrize(
+    ("shape", "shown"),
+    [
+        ('<sphere radius="0.0"/>', '<sphere radius="0.0">'),
+        ('<box size="0.1 0 0.1"/>', '<box size="0.1 0 0.1">'),
+        ('<cylinder radius="0.1" length="-1"/>', '<cylinder length="-1">'),
+    ],
+)
+def test_a_visual_of_a_size_mujoco_cannot_compile_is_left_out_as_mujocos_import_leaves_it_out(
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+    shape: str,
+    shown: str,
+) -> None:
+    # pybullet's laikago_toes_zup.urdf marks its toes with <sphere radius="0.0"/>; MuJoCo loads it (it
+    # discards visuals), so it is read, the visual left out and said
+    visual = f"<visual><geometry>{shape}</geometry></visual>"
+    monkeypatch.chdir(_lab(tmp_path, urdf(visual=visual), {}, ""))
+    assert main(["build", "specs/arm.yaml", "-o", "out.xml"]) == 0
+    assert capsys.readouterr().err.splitlines() == [
+        f"warning: specs/arm.urdf:3: the <visual> of link 'l1' is {shown}, not a positive size: left out, as "
+        "MuJoCo's URDF import leaves out every visual",
+        "wrote out.xml",
+    ]
+    model = mujoco.MjModel.from_xml_path("out.xml")
+    assert model.ngeom == 0
