@@ -67,10 +67,10 @@ def cpu_seconds(plan: VariantPlan) -> float:
     plan.check()
     indices = np.arange(plan.size)
     columns = plan.columns(range(plan.size))
-    effects = batch_module._effects(plan, robot, model, columns)
-    rows = batch_module._rows(plan, robot, model, effects, indices, columns)
+    effects = batch_module.laws_of(plan, robot, model, columns)
+    rows = batch_module.world_rows(plan, robot, model, effects, indices, columns)
     fields = batch_module.model_fields()
-    batch_module._checked(plan, robot, model, rows, fields, batch_module.batchable_fields())
+    batch_module.checked_worlds(plan, robot, model, rows, fields, batch_module.batchable_fields())
     return time.perf_counter() - start
 
 

@@ -150,7 +150,7 @@ class WarpBatch:
         if indices.size == 0:
             return
         plan = dataclasses.replace(self.plan, seed=seed)
-        rows = _rows(plan, self.robot, self.cpu_model, self.effects, indices)
+        rows = world_rows(plan, self.robot, self.cpu_model, self.effects, indices)
         for name in self.varied:
             if name in rows.values:
                 write_rows(getattr(self.model, name), indices, rows.values[name])
@@ -158,7 +158,7 @@ class WarpBatch:
         self.seeds[indices] = seed
 
 
-def _rows(
+def world_rows(
     plan: VariantPlan,
     robot: RobotModel,
     model: mujoco.MjModel,
@@ -180,6 +180,7 @@ def _rows(
         found = world_values(model, patches, [n for n in written if hasattr(model, n)])
         return Rows(found.values, found.qpos, found.ctrl)
     positions, drawn = columns if columns is not None else plan.columns([int(i) for i in indices])
+    effects.validate(drawn)
     values = effects.arrays(positions, drawn, len(indices))
     qpos = values["key_qpos"][:, home] if "key_qpos" in values and home is not None else None
     if qpos is None:
@@ -207,7 +208,7 @@ def _derive(
         resolve_dampratios(model, effects.dampratio, dofs)
 
 
-def _effects(
+def laws_of(
     plan: VariantPlan, robot: RobotModel, model: mujoco.MjModel, columns: Columns
 ) -> PlanEffects | None:
     """The plan's laws, or None (logged) when its worlds must be patched one by one."""
@@ -233,10 +234,10 @@ def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | Non
     model = robot.get_model(cache=plan.cache, store=plan.store)
     indices = np.arange(plan.size, dtype=np.int64)
     columns = plan.columns(range(plan.size))
-    effects = _effects(plan, robot, model, columns)
-    rows = _rows(plan, robot, model, effects, indices, columns)
+    effects = laws_of(plan, robot, model, columns)
+    rows = world_rows(plan, robot, model, effects, indices, columns)
     fields, batchable = model_fields(), batchable_fields()
-    nominal = _checked(plan, robot, model, rows, fields, batchable)
+    nominal = checked_worlds(plan, robot, model, rows, fields, batchable)
     written = {name for name in rows.values if name in batchable and _varies(rows.values[name], model, name)}
     derived = {f for f in SET_CONST_OUTPUTS if f in batchable} if written else set()
     if effects is not None and effects.dampratio and written:
@@ -268,7 +269,7 @@ def _varies(values: NDArray[np.float64], model: mujoco.MjModel, name: str) -> bo
     return bool((values != values[:1]).any() or not np.array_equal(values[0].reshape(ours.shape), ours))
 
 
-def _checked(
+def checked_worlds(
     plan: VariantPlan,
     robot: RobotModel,
     model: mujoco.MjModel,

@@ -28,6 +28,17 @@ def _scatter_rows(
 
 
 @wp.kernel  # type: ignore[untyped-decorator]
+def _scatter_mapped(
+    rows: wp.array2d(dtype=float),  # type: ignore[valid-type]
+    worlds: wp.array(dtype=int),  # type: ignore[valid-type]
+    columns: wp.array(dtype=int),  # type: ignore[valid-type]
+    target: wp.array2d(dtype=float),  # type: ignore[valid-type]
+) -> None:
+    i, j = wp.tid()
+    target[worlds[i], columns[j]] = rows[i, j]
+
+
+@wp.kernel  # type: ignore[untyped-decorator]
 def _dampratio_bias(
     actuators: wp.array(dtype=int),  # type: ignore[valid-type]
     dofs: wp.array(dtype=int),  # type: ignore[valid-type]
@@ -55,13 +66,24 @@ def flat_view(array: Any) -> Any:
     return wp.array(ptr=array.ptr, dtype=wp.float32, shape=(rows, per_row), device=array.device, copy=False)
 
 
-def write_rows(target: Any, worlds: NDArray[np.int64], rows: NDArray[np.float64]) -> None:
-    """``target[worlds[i]] = rows[i]`` on ``target``'s device (``rows``: one row per world given)."""
+def write_rows(
+    target: Any,
+    worlds: NDArray[np.int64],
+    rows: NDArray[np.float64],
+    columns: NDArray[np.int64] | None = None,
+) -> None:
+    """``target[worlds[i]] = rows[i]`` on ``target``'s device (``rows``: one row per world given);
+    with ``columns``, number j of a row goes to number ``columns[j]`` of the target's row (another
+    model holding the same elements at other places)."""
     view = flat_view(target)
     flat = np.ascontiguousarray(rows.reshape(len(worlds), -1), dtype=np.float32)
     source = wp.array(flat, dtype=wp.float32, device=view.device)
     indices = wp.array(np.asarray(worlds, dtype=np.int32), dtype=wp.int32, device=view.device)
-    wp.launch(_scatter_rows, dim=flat.shape, inputs=[source, indices, view], device=view.device)
+    if columns is None:
+        wp.launch(_scatter_rows, dim=flat.shape, inputs=[source, indices, view], device=view.device)
+        return
+    where = wp.array(np.asarray(columns, dtype=np.int32), dtype=wp.int32, device=view.device)
+    wp.launch(_scatter_mapped, dim=flat.shape, inputs=[source, indices, where, view], device=view.device)
 
 
 def resolve_dampratios(model: Any, dampratio: dict[int, float], dofs: dict[int, int]) -> None:

@@ -21,7 +21,7 @@ list (a range's low and high, which a rule may compare) are not taken apart this
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import mujoco
@@ -69,6 +69,20 @@ class PlanEffects:
     """Actuator -> damping ratio: its ``biasprm[2]`` follows the inertia each world has at qpos0."""
     rule: str
     """How this MuJoCo resolves a dampratio (:func:`assembler.patch.derived.dampratio_rule`)."""
+    validated: dict[str, tuple[float, float]]
+    """Drawn field -> the range whose values are known valid (its probes' lowest and highest)."""
+    check: Callable[[str, float], None]
+    """Validate one value of one drawn field (the reference world with it: a spec error names it)."""
+
+    def validate(self, drawn: Mapping[str, NDArray[np.float64]]) -> None:
+        """Validate the drawn values outside :attr:`validated` (a normal draw's tails), widening it."""
+        for key, values in drawn.items():
+            low, high = self.validated[key]
+            for value in (float(values.min()), float(values.max())) if values.size else ():
+                if not low <= value <= high:
+                    self.check(key, value)
+                    low, high = min(low, value), max(high, value)
+            self.validated[key] = (low, high)
 
     def arrays(
         self, positions: Mapping[str, NDArray[np.int64]], drawn: Mapping[str, NDArray[np.float64]], n: int
@@ -108,10 +122,15 @@ class _Probe:
 
 
 def _probe_values(plan: VariantPlan, key: str, drawn: Mapping[str, NDArray[np.float64]]) -> list[object]:
+    """A grid's values; a uniform draw's range (its bounds and middle: every value it can draw is
+    then validated); a normal draw's lowest, middle and highest value among the worlds."""
     grid = next((g for g in plan.grids if g.key == key), None)
     if grid is not None:
         return list(grid.values)
-    low, high = float(drawn[key].min()), float(drawn[key].max())
+    draw = next(d for d in plan.draws if d.key == key)
+    low, high = (
+        (draw.a, draw.b) if draw.law == "uniform" else (float(drawn[key].min()), float(drawn[key].max()))
+    )
     return [low, high] if low == high else [low, (low + high) / 2, high]
 
 
@@ -177,7 +196,14 @@ def plan_effects(
     for name in names:
         base = ref_written.get(name, np.asarray(getattr(model, name), dtype=float))
         fields[name] = _field_effects(plan, name, base, probes, model, reference)
-    return PlanEffects(fields, dict(ref_patch.dampratio), dampratio_rule(model, ref_patch.dampratio))
+    ranges = {p.key: np.asarray(p.values, dtype=float) for p in probes if p.key not in positions}
+    validated = {key: (float(values.min()), float(values.max())) for key, values in ranges.items()}
+
+    def check(key: str, value: float) -> None:
+        patch_of(reference | {key: value}, f"{key}={json.dumps(value)}")
+
+    rule = dampratio_rule(model, ref_patch.dampratio)
+    return PlanEffects(fields, dict(ref_patch.dampratio), rule, validated, check)
 
 
 def _world_of(

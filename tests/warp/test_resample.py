@@ -12,6 +12,7 @@ import pytest
 pytest.importorskip("mujoco_warp", reason="MuJoCo Warp is not installed: pip install -e '.[warp]'")
 
 import assembler  # noqa: E402
+from assembler.errors import SpecError  # noqa: E402
 from assembler.warp import WarpBatch, put_variants  # noqa: E402
 from assembler.worlds.variants.plan import Draw, Grid, VariantPlan  # noqa: E402
 
@@ -110,3 +111,32 @@ def test_plan_columns_are_the_values_of_each_variant() -> None:
             == variant["joint_defaults.damping"]
         )
         assert {key: drawn[key][column] for key in drawn} == {d.key: variant[d.key] for d in PLAN.draws}
+
+
+def test_a_uniform_range_is_validated_once_at_its_bounds() -> None:
+    plan = VariantPlan(
+        "Sparrow7",
+        fixed=("bodies=[{match: link3, mass_scale: 1}]",),
+        draws=(Draw.parse("bodies[0].mass_scale=0:1", "uniform"),),  # 0 is no mass factor
+        random=4,
+    )
+    with pytest.raises(
+        SpecError, match=r"^--uniform bodies\[0\].mass_scale: Input should be greater than 0$"
+    ):
+        put_variants(plan)
+
+
+def test_a_normal_draw_beyond_the_values_validated_is_validated_when_resampled() -> None:
+    plan = VariantPlan(
+        "Sparrow7",
+        fixed=("bodies=[{match: link3, mass_scale: 1}]",),
+        draws=(Draw.parse("bodies[0].mass_scale=1:0.05", "normal"),),
+        random=4,
+    )
+    batch = put_variants(plan)
+    assert batch.effects is not None
+    low, high = batch.effects.validated["bodies[0].mass_scale"]
+    batch.effects.validate({"bodies[0].mass_scale": np.array([high + 0.5])})  # valid: the range widens
+    assert batch.effects.validated["bodies[0].mass_scale"] == (low, high + 0.5)
+    with pytest.raises(SpecError, match=r"^--normal bodies\[0\].mass_scale: Input should be greater than 0$"):
+        batch.effects.validate({"bodies[0].mass_scale": np.array([0.5, -0.2])})
