@@ -94,12 +94,20 @@ def after_import(tmp_path_factory: pytest.TempPathFactory) -> Any:
     return _result(AFTER_IMPORT, tmp_path_factory.mktemp("import"))
 
 
+def _not_robosuites(expected: dict[str, Any], after_import: Any, family: str) -> dict[str, Any]:
+    """``expected`` without the names robosuite had before the bridge: its own, and those of packages
+    that register with it when it loads (robosuite-models' G1 and Go2, installed with the corpus
+    extra). The bridge leaves those to robosuite (see test_robosuites_own_names_...)."""
+    return {name: value for name, value in expected.items() if name not in after_import["robosuites"][family]}
+
+
 def test_importing_the_bridge_registers_every_shipped_robot_with_the_robot_type_of_its_base(
     after_import: Any,
 ) -> None:
-    assert after_import["robot_types"] == ROBOT_TYPES
-    assert after_import["new"]["type"] == sorted(ROBOT_TYPES)
-    assert after_import["robot_specs"] == {name: name for name in ROBOT_TYPES}
+    robot_types = _not_robosuites(ROBOT_TYPES, after_import, "robot")
+    assert after_import["robot_types"] == robot_types
+    assert after_import["new"]["type"] == sorted(robot_types)
+    assert after_import["robot_specs"] == {name: name for name in robot_types}
     assert set(ROBOT_TYPES) <= set(after_import["all_robots"])
     assert after_import["created"] == "Sparrow7"  # robosuite.models.robots.create_robot builds it
 
@@ -108,7 +116,8 @@ def test_importing_the_bridge_registers_every_shipped_gripper_and_base_as_robosu
     after_import: Any,
 ) -> None:
     assert after_import["grippers"] == dict.fromkeys(GRIPPERS, True)
-    assert after_import["bases"] == {name: [kind] for name, kind in BASES.items()}
+    bases = _not_robosuites(BASES, after_import, "base")
+    assert after_import["bases"] == {name: [kind] for name, kind in bases.items()}
 
 
 def test_robosuites_own_names_still_mean_robosuites_classes_after_the_import(after_import: Any) -> None:
