@@ -12,7 +12,7 @@ import numpy as np
 from assembler.importers.entries import Entry
 from assembler.importers.physics import home_pose, posed_data, scalar_joints, torque_limit
 from assembler.importers.reading import ModelFile
-from assembler.importers.tree import Tree
+from assembler.importers.tree import FINGER_BODY_WORDS, Tree
 from assembler.models.motor_table import MOTORS
 from assembler.robosuite.conventions import has_force_range, is_bridge_servo
 from assembler.tools.lint.gripper_pose import ROOT_OFFSET_LIMIT
@@ -39,6 +39,15 @@ def _actuated_joints(model: mujoco.MjModel) -> dict[str, int]:
             name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.actuator_trnid[actuator, 0]))
             driven[name or ""] = actuator
     return driven
+
+
+def _actuator_label(model: mujoco.MjModel, actuator: int) -> str:
+    """The actuator's name, or for an unnamed one the joint it drives (``the servo of joint waist``)."""
+    name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator)
+    if name:
+        return str(name)
+    joint = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, int(model.actuator_trnid[actuator, 0]))
+    return f"of joint {joint}"
 
 
 def driven_joints(model: mujoco.MjModel, joints: tuple[str, ...]) -> list[str]:
@@ -144,7 +153,7 @@ def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = 
             "the arm's actuators are position servos: in robosuite each becomes a motor whose ctrlrange "
             "is its forcerange (robosuite's controllers write torques); as_is keeps the servos"
         )
-        bare = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in servos]
+        bare = [_actuator_label(model, a) for a in servos]
         bare = [name for name, a in zip(bare, servos, strict=True) if not has_force_range(model, a)]
         if bare:
             entry.decide(f"give the servos {_short(bare)} a forcerange in the model (actuators: in the spec)")
@@ -170,6 +179,20 @@ def balance_entry(file: ModelFile) -> list[Entry]:
             "MuJoCo refuses this URDF's inertias (A + B >= C violated): balanced as its balanceinertia would"
         )
     ]
+
+
+def _fixed_fingers(model: mujoco.MjModel, eef: str) -> list[str]:
+    """Bodies below ``eef`` named like fingers (Kinova j2s6s200's URDF welds its two fingers on)."""
+    top = model.body(eef).id
+    names = []
+    for body in range(top + 1, model.nbody):
+        walk = body
+        while walk > top:
+            walk = int(model.body_parentid[walk])
+        name = model.body(body).name
+        if walk == top and FINGER_BODY_WORDS.search(name):
+            names.append(name)
+    return names
 
 
 def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
@@ -208,11 +231,20 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
             "should"
         )
     entries.append(joints)
+    fixed_hand = _fixed_fingers(file.model, tree.eef_body)
     if tree.fingers:
         entries.append(
             Entry("default_grippers", {"right": None}).guess(
                 "the file has its own jaw, so no gripper is added; a gripper spec of the jaw needs its "
                 "own file"
+            )
+        )
+    elif fixed_hand:
+        entries.append(
+            Entry("default_grippers", {"right": None}).decide(
+                f"the file has its own hand, fixed ({_short(fixed_hand, 3)}: bodies named like fingers "
+                "below the end effector, without joints): no gripper is added on top of it; a gripper "
+                "of your choice needs a file of the arm without that hand"
             )
         )
     else:

@@ -10,6 +10,9 @@ from pathlib import Path
 GENERIC_STEMS = frozenset({"robot", "model", "main", "scene", "index", "urdf", "mjcf"})
 """File names that say nothing about the robot (robosuite's ``robot.xml``): the folder is used instead."""
 
+GENERIC_FOLDERS = frozenset({"assets", "xml", "mjcf", "urdf", "models", "model", "robots", "robot", "scenes"})
+"""Folder names that say nothing about the robot in them."""
+
 MUJOCO_UNNAMED = "MuJoCo Model"
 """The model name MuJoCo gives a file whose ``<mujoco>`` has no ``model`` attribute."""
 
@@ -36,6 +39,8 @@ def name_source(model_name: str, path: Path, scene: bool = False) -> str:
     if model_name and model_name.strip().lower() not in GENERIC_NAMES:
         return model_name
     if not scene and path.stem.lower() not in GENERIC_STEMS:
+        return path.stem
+    if path.parent.name.lower() in GENERIC_FOLDERS:  # gym-aloha's assets/bimanual_viperx_transfer_cube.xml
         return path.stem
     return path.parent.name or path.stem
 

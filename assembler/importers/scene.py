@@ -51,14 +51,17 @@ class SceneCut:
     cuts: tuple[Cut, ...]
     unselectable: tuple[str, ...]
     """Elements beside the robot that no ``where:`` selects without selecting part of the robot."""
+    twins: tuple[str, ...] = ()
+    """Deleted bodies of ``<worldbody>`` that hold as many joints as the robot: a second robot or arm
+    (gym-aloha's two ViperX arms stand on the world side by side)."""
 
     @property
     def fixes(self) -> list[MjcfFix]:
         return [MjcfFix(element=c.tag, where=c.where, delete=True, why=c.why) for c in self.cuts]
 
 
-def _robot_body(model: mujoco.MjModel) -> str:
-    """The world's child whose subtree holds the most joints (free joints aside), then most bodies."""
+def _weights(model: mujoco.MjModel) -> dict[str, tuple[int, int]]:
+    """Each child of the world by name -> the joints (free joints aside) and bodies its subtree holds."""
     roots = [b for b in range(1, model.nbody) if model.body_parentid[b] == 0]
     free = int(mujoco.mjtJoint.mjJNT_FREE)
 
@@ -71,7 +74,13 @@ def _robot_body(model: mujoco.MjModel) -> str:
         )
         return joints, len(bodies)
 
-    return model.body(max(roots, key=weight)).name if roots else ""
+    return {model.body(root).name: weight(root) for root in roots}
+
+
+def _robot_body(model: mujoco.MjModel) -> str:
+    """The world's child whose subtree holds the most joints (free joints aside), then most bodies."""
+    weights = _weights(model)
+    return max(weights, key=lambda name: weights[name]) if weights else ""
 
 
 def _holds(element: ET.Element, body: str) -> bool:
@@ -109,7 +118,12 @@ def scene_cut(path: Path, files: frozenset[Path], model: mujoco.MjModel) -> Scen
         cuts.append(Cut(child.tag, where, f"{shown}, beside the robot in <worldbody>", child, why))
     deleted = [cut.element for cut in cuts]
     more, lost = dependent_cuts(xml, deleted)
-    return SceneCut(robot, tuple([*cuts, *more]), tuple([*unselectable, *lost]))
+    weights = _weights(model)
+    joints = weights[robot][0]
+    twins = tuple(
+        name for name, (count, _) in weights.items() if name != robot and joints and count == joints
+    )
+    return SceneCut(robot, tuple([*cuts, *more]), tuple([*unselectable, *lost]), twins)
 
 
 def scene_entry(cut: SceneCut) -> Entry:
@@ -120,6 +134,12 @@ def scene_entry(cut: SceneCut) -> Entry:
         f"this file is a task scene: the robot is {cut.robot}, the body of <worldbody> holding the most "
         "joints; the deletions below leave it alone as the spec reads the file (the file is not changed)"
     )
+    if cut.twins:
+        entry.decide(
+            f"the file also holds {', '.join(cut.twins)}, of as many joints as {cut.robot} (a second arm, "
+            f"a second robot), deleted below: this spec is {cut.robot} alone; a bimanual robot needs a file "
+            "with both arms under one root body (arm_type: bimanual, docs/add-your-robot.md)"
+        )
     if cut.unselectable:
         entry.decide(
             f"{', '.join(cut.unselectable)} should go too, but no where: selects them without selecting "

@@ -21,6 +21,10 @@ EEF_WORDS = re.compile(
 )
 """Body names vendors give the end of an arm, where a gripper is mounted."""
 
+FINGER_BODY_WORDS = re.compile(r"finger|jaw|claw|knuckle|thumb", re.IGNORECASE)
+"""Body names of a jaw's or hand's moving parts (metaworld's Sawyer: joint r_close on body rightclaw); not
+``gripper``, a word vendors also give the wrist link (the ViperX's gripper_link turns on wrist_rotate)."""
+
 GRIP_WORDS = re.compile(r"grip|pinch|tcp|eef|ee_site", re.IGNORECASE)
 """Site names vendors give a grip point."""
 
@@ -82,8 +86,14 @@ def _subtree(model: mujoco.MjModel, top: int) -> list[int]:
 
 
 def _finger_joints(model: mujoco.MjModel, joints: list[int]) -> list[int]:
-    """Joints named like fingers, and every joint below the first body such a joint hangs from."""
-    named = [j for j in joints if FINGER_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_JOINT, j))]
+    """Joints named like fingers (or moving a body named so), and every joint below the first body such
+    a joint hangs from."""
+    named = [
+        j
+        for j in joints
+        if FINGER_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_JOINT, j))
+        or FINGER_BODY_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_BODY, int(model.jnt_bodyid[j])))
+    ]
     if not named:
         return []
     hand = _common_ancestor(model, [int(model.body_parentid[model.jnt_bodyid[j]]) for j in named])

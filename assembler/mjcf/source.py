@@ -163,17 +163,55 @@ def _parse(
         stale = apply_fixes([root, *others.values()], fixes)
         if stale:
             raise MjcfError([Problem(f"{shown}: {line}") for line in stale])
-        repaired = {name: ET.tostring(other, encoding="utf-8") for name, other in others.items()}
+        emptied = {name for name, other in others.items() if len(other) == 0 and len(included[name].strip())}
+        for tree in [root, *others.values()]:  # MuJoCo refuses an empty include file: the repairs emptied
+            for parent in list(tree.iter()):  # it (a scene's other arm), so its <include> goes with it
+                for child in [c for c in parent if c.tag == "include" and c.get("file") in emptied]:
+                    parent.remove(child)
+        repaired = {
+            name: ET.tostring(other, encoding="utf-8")
+            for name, other in others.items()
+            if name not in emptied
+        }
         # Parsed from text: asset paths stay relative and are resolved against the file's folder below;
         # the included files are handed over repaired, by the names the <include>s give.
         text = ET.tostring(root, encoding="unicode")
         lines = repaired_lines(root, text, original)
         with mujoco_warnings.warned(shown):
-            return root, mujoco.MjSpec.from_string(text, include=repaired), lines, repaired
+            spec = mujoco.MjSpec.from_string(text, include=repaired)
+        _unprefix_included_assets(spec, {name: others[name] for name in repaired})
+        return root, spec, lines, repaired
     except ET.ParseError as error:
         raise MjcfError(f"{shown}: not well-formed XML: {error}") from None
     except ValueError as error:
         raise MjcfError(refusal_line(str(error), shown, lines, "MuJoCo cannot read it")) from None
+
+
+ASSET_TAGS = ("mesh", "texture", "hfield", "skin")
+
+
+def _unprefix_included_assets(spec: mujoco.MjSpec, included: Mapping[str, ET.Element]) -> None:
+    """Asset paths of included files as MuJoCo reads the file itself: relative to the main file's folder.
+
+    Handed an included file through ``from_string(include=...)``, MuJoCo prefixes the include's own
+    folder to the paths of the assets it declares (unless that name happens to exist from the working
+    folder), where ``from_file`` does not: metaworld's ``../objects/assets/block_dependencies.xml``
+    names ``../objects/meshes/block/block.stl``, which would become ``../objects/objects/meshes/...``."""
+    original: dict[str, str] = {}
+    for name, tree in included.items():
+        folder = os.path.dirname(name)
+        if not folder:
+            continue
+        for element in tree.iter():
+            if element.tag in ASSET_TAGS and element.get("file"):
+                written = element.get("file", "")
+                original[os.path.normpath(os.path.join(folder, written))] = written
+    if not original:
+        return
+    for elements in (spec.meshes, spec.hfields, spec.skins, spec.textures):
+        for element in elements:
+            if element.file in original:
+                element.file = original[element.file]
 
 
 def _stat(path: str) -> tuple[int, int] | None:

@@ -399,3 +399,32 @@ def test_a_generic_model_name_gives_way_to_the_file_name(
     spec = model.with_name("pr2_arm.yaml")
     assert _new(model, spec) == 0
     assert yaml.safe_load(spec.read_text())["name"] == "Pr2Arm"
+
+
+def test_a_scene_whose_included_files_name_assets_from_the_main_files_folder_is_read_as_mujoco_reads_it(
+    write: Callable[[str, str], Path],
+) -> None:
+    # metaworld's sawyer_xyz/*.xml includes ../objects/assets/*.xml, whose meshes are named from the main
+    # file's folder (../objects/meshes/...), as MuJoCo resolves them; the other arm of the scene sits in a
+    # file of its own (gym-aloha's vx300s_right.xml), which the cut empties
+    write("objects/meshes/link.obj", TETRAHEDRON_OBJ)
+    write(
+        "objects/assets/deps.xml",
+        '<mujocoinclude><asset><mesh name="link" file="../objects/meshes/link.obj"/></asset></mujocoinclude>',
+    )
+    arm = TWO_LINK_MJCF.split("<worldbody>")[1].split("</worldbody>")[0]
+    twin = arm.replace('name="', 'name="twin_').replace('joint="', 'joint="twin_')
+    write("objects/assets/twin.xml", f"<mujocoinclude>{twin}</mujocoinclude>")
+    scene = TWO_LINK_MJCF.split("<worldbody>")[0].replace('<mujoco model="twolink">', "<mujoco>")
+    scene += '<include file="../objects/assets/deps.xml"/>\n<worldbody>' + arm.replace(
+        '<geom name="base_col" type="cylinder" size="0.05 0.05"/>',
+        '<geom name="base_col" type="mesh" mesh="link"/>',
+    )
+    scene += '<include file="../objects/assets/twin.xml"/>\n</worldbody>\n</mujoco>\n'
+    model = write("tasks/sawyer_task.xml", scene)
+    spec = model.with_name("sawyer_task.yaml")
+    with allowing([model.parent.parent]):
+        assert _new(model, spec, "--allow-path", str(model.parent.parent)) == 0
+    text = spec.read_text()
+    assert "# decide: the file also holds twin_" in text
+    assert "name: Tasks" in text  # a task scene is named after its folder
