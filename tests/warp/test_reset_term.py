@@ -25,18 +25,34 @@ from assembler.worlds.variants.plan import Draw, Grid, VariantPlan  # noqa: E402
 
 PLAN = VariantPlan(
     "Sparrow7",
-    fixed=("bodies=[{match: link3, mass_scale: 1}]", "joints=[{match: joint2, armature: 0.1}]"),
+    fixed=(
+        "bodies=[{match: link3, mass_scale: 1}, {match: 'link[45]', size_scale: 1}]",
+        "joints=[{match: joint2, armature: 0.1}]",
+        "geoms=[{match: 'link7_col*', friction: [1, 0.005, 0.0001]}]",
+    ),
     grids=(Grid.parse("joint_defaults.damping=0.1,0.4"),),
     draws=(
         Draw.parse("bodies[0].mass_scale=0.7:1.3", "uniform"),
+        Draw.parse("bodies[1].size_scale=0.85:1.15", "uniform"),
         Draw.parse("joints[0].armature=0.05:0.5", "uniform"),
+        Draw.parse("geoms[0].friction[0]=0.3:1.2", "uniform"),
     ),
     random=2,
     seed=1,
 )
-"""Four Sparrow7 worlds: two dampings, each with draws of a link's mass and a joint's armature."""
+"""Four Sparrow7 worlds: two dampings, each with draws of a link's mass, two links' size, a joint's
+armature and a geom's friction."""
 
-FIELDS = ("body_mass", "body_inertia", "dof_damping", "dof_armature")
+FIELDS = (
+    "body_mass",
+    "body_inertia",
+    "body_pos",
+    "dof_damping",
+    "dof_armature",
+    "geom_size",
+    "geom_friction",
+)
+KINDS = ("body", "body", "body", "jnt", "jnt", "geom", "geom")
 
 
 def test_the_reset_term_writes_each_reset_worlds_draws_into_mjlabs_model_as_the_cpu_model_has_them() -> None:
@@ -69,15 +85,15 @@ def test_the_reset_term_writes_each_reset_worlds_draws_into_mjlabs_model_as_the_
         }
         overrides = [*PLAN.fixed, *(f"{key}={value}" for key, value in variant.items())]
         cpu = assembler.assemble(PLAN.robot, overrides=overrides).get_model(cache=False, store=False)
-        for name, kind in zip(FIELDS, ("body", "body", "jnt", "jnt"), strict=True):
-            for element in range({"body": cpu.nbody, "jnt": cpu.njnt}[kind]):
-                label = cpu.body(element).name if kind == "body" else cpu.joint(element).name
+        for name, kind in zip(FIELDS, KINDS, strict=True):
+            for element in range({"body": cpu.nbody, "jnt": cpu.njnt, "geom": cpu.ngeom}[kind]):
+                label = {"body": cpu.body, "jnt": cpu.joint, "geom": cpu.geom}[kind](element).name
                 if element == 0 and kind == "body":
                     continue
                 assert getattr(model, name).shape[0] == 4, f"{name}: not expanded per world"
                 ours = getattr(model, name).numpy()[world]
-                if kind == "body":
-                    row = theirs.body("robot/" + label).id
+                if kind != "jnt":
+                    row = (theirs.body if kind == "body" else theirs.geom)("robot/" + label).id
                     expected = getattr(cpu, name)[element]
                 else:
                     row = theirs.jnt_dofadr[theirs.joint("robot/" + label).id]
