@@ -154,6 +154,11 @@ class WarpBatch:
         for name in self.varied:
             if name in rows.values:
                 write_rows(getattr(self.model, name), indices, rows.values[name])
+            elif name not in SET_CONST_OUTPUTS:  # patched on CPU, no world writes it: the robot's value
+                nominal = np.asarray(getattr(self.cpu_model, name), dtype=float)
+                write_rows(
+                    getattr(self.model, name), indices, np.tile(nominal.reshape(1, -1), (len(indices), 1))
+                )
         _derive(self.model, self.data, self.effects, self.cpu_model, set(rows.values), restore=True)
         self.seeds[indices] = seed
 
