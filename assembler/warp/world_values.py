@@ -1,9 +1,13 @@
-"""Each world's values of the fields a variant plan varies, from one compiled model patched in turn.
+"""Each world's values of the fields a variant plan varies, from one compiled model patched in turn,
+and what MuJoCo Warp may not vary per world.
 
-Every variant of the plan is resolved against the robot (a spec validation, no MJCF preparation),
-turned into a patch (:mod:`assembler.patch.patchable`), written into one scratch model, its derived
-constants recomputed with ``mj_setConst``, and the varied fields read back; then the scratch model
-is restored. Nothing is compiled but the robot itself, and no model is copied per world.
+The exact path (a plan outside :mod:`assembler.warp.plan_effects`' laws, and the check of two worlds
+of a plan inside them): every variant is resolved against the robot (a spec validation, no MJCF
+preparation), turned into a patch (:mod:`assembler.patch.patchable`), written into one scratch
+model, its derived constants recomputed with ``mj_setConst``, and the varied fields read back; then
+the scratch model is restored. Nothing is compiled but the robot itself, and no model is copied per
+world. :func:`refuse_field` and :func:`nominal_fields` say what a world may not vary on MuJoCo Warp,
+and :func:`home_controls` gives the worlds' home controls in arrays.
 """
 
 from __future__ import annotations
@@ -131,15 +135,6 @@ def refuse_field(name: str, fields: set[str], batchable: set[str], label: str) -
             "(fields it can vary start with '*' in mujoco_warp's types.Model); "
             "build such variants as separate models"
         )
-
-
-def refused_fields(
-    patches: Sequence[ModelPatch], fields: set[str], batchable: set[str], labels: Sequence[str]
-) -> None:
-    """:func:`refuse_field` for the first field a world's patch writes that MuJoCo Warp cannot vary."""
-    for patch, label in zip(patches, labels, strict=True):
-        for name in patch.fields:
-            refuse_field(name, fields, batchable, label)
 
 
 def nominal_fields(
