@@ -316,6 +316,12 @@ def _new(parser: argparse.ArgumentParser) -> None:
         "--kind", choices=("robot", "gripper"), help="a robot arm or a hand (default: guessed from the names)"
     )
     parser.add_argument("--force", action="store_true", help="replace SPEC if it exists")
+    parser.add_argument(
+        "--strict",
+        action="store_true",
+        help="refuse a file read only with a repair or with values left out (inertias MuJoCo refuses, "
+        "visuals of no size, a <mimic> MuJoCo ignores) instead of writing the repair",
+    )
 
 
 def _cache(parser: argparse.ArgumentParser) -> None:

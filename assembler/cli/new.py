@@ -21,7 +21,7 @@ def run(args: argparse.Namespace) -> int:
     if args.model_file.startswith(menagerie.NEW_PREFIX):  # a Menagerie model by name
         model_file, served = menagerie.entry_file(args.model_file)
         print(f"{args.model_file}: {display_path(model_file)} ({served.license}, oid {served.oid[:12]})")
-    written, target = write_new_spec(model_file, output, args.kind, args.force)
+    written, target = write_new_spec(model_file, output, args.kind, args.force, args.strict)
     # A package the user has still to declare is found for the check, as it will be once declared.
     pending = [package for package in written.packages if package.declared != "beside the spec"]
     with found_packages(pending):

@@ -112,13 +112,14 @@ def _below(path: Path, folder: Path) -> bool:
     return path.resolve().is_relative_to(folder.resolve())
 
 
-def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None) -> NewSpec:
+def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict: bool = False) -> NewSpec:
     """The spec for the MJCF or URDF at ``model_path``, to be written at ``spec_path`` (file references
-    are relative to its folder); ``kind`` robot or gripper, guessed when None."""
+    are relative to its folder); ``kind`` robot or gripper, guessed when None; ``strict``: a file read
+    only with a repair or with values left out is refused (:func:`~assembler.importers.reading.repairs`)."""
     resolved = check_model_path(model_path)  # before the URDF's packages are looked for in it
     packages = packages_beside(resolved, spec_path.parent) if file_format(model_path) == "urdf" else []
     with found_packages(packages):
-        file = read_model_file(model_path)
+        file = read_model_file(model_path, strict=strict)
     cut = None
     if file.format == "mjcf":
         cut = scene_cut(file.path, frozenset(Path(p) for p, _, _ in file.source.files), file.model)
@@ -162,11 +163,15 @@ def snake_case(name: str) -> str:
 
 
 def write_new_spec(
-    model_path: Path, spec_path: Path | None = None, kind: Kind | None = None, force: bool = False
+    model_path: Path,
+    spec_path: Path | None = None,
+    kind: Kind | None = None,
+    force: bool = False,
+    strict: bool = False,
 ) -> tuple[NewSpec, Path]:
     """:func:`new_spec`, written to ``spec_path`` (default: ``<name in snake case>.yaml`` in the working
     folder); an existing file is kept unless ``force``. Returns the spec and where it was written."""
-    written = new_spec(model_path, spec_path or Path.cwd() / "new.yaml", kind)
+    written = new_spec(model_path, spec_path or Path.cwd() / "new.yaml", kind, strict)
     target = spec_path or Path(snake_case(written.name) + ".yaml")
     if os.path.lexists(target) and not force:  # a link too; a name too long is the writer's to say
         raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")

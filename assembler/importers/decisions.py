@@ -171,14 +171,18 @@ def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = 
 
 
 def balance_entry(file: ModelFile) -> list[Entry]:
-    """``balance_inertia: true`` when MuJoCo refused the URDF's inertias until balanced."""
+    """``balance_inertia: true`` when MuJoCo refused the URDF's inertias until balanced, with one line
+    per link changed, its inertia before and after."""
     if not file.balance_inertia:
         return []
-    return [
-        Entry("balance_inertia", True).guess(
-            "MuJoCo refuses this URDF's inertias (A + B >= C violated): balanced as its balanceinertia would"
-        )
-    ]
+    entry = Entry("balance_inertia", True).guess(
+        "MuJoCo refuses this URDF's inertias: each such link's inertia is made isotropic at the mean of "
+        "its principal moments; correct the URDF's <inertial> instead (new --strict refuses the file)"
+    )
+    for note in file.source.notes:
+        if note.startswith("balance_inertia: "):
+            entry.guess(note.removeprefix("balance_inertia: "))
+    return [entry]
 
 
 def _fixed_fingers(model: mujoco.MjModel, eef: str) -> list[str]:

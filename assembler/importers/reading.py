@@ -14,7 +14,7 @@ from typing import Literal
 
 import mujoco
 
-from assembler.errors import MjcfError
+from assembler.errors import MjcfError, Problem
 from assembler.files import menagerie
 from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, is_file, package_root
@@ -23,6 +23,7 @@ from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
 from assembler.urdf.packages import share_reference
+from assembler.urdf.postprocess import MUJOCO_IGNORES
 
 Format = Literal["mjcf", "urdf"]
 
@@ -80,7 +81,7 @@ def _compile(source: MjcfSource, shown: str) -> mujoco.MjModel:
 
 
 def _read(
-    path: Path, reference: str, fmt: Format, fixes: Sequence[MjcfFix]
+    path: Path, reference: str, fmt: Format, fixes: Sequence[MjcfFix], strict: bool = False
 ) -> tuple[MjcfSource, mujoco.MjModel, bool]:
     shown = display_path(path)
     if fmt == "mjcf":
@@ -90,8 +91,9 @@ def _read(
     try:
         return source, source.new_spec().compile(), False
     except ValueError as error:
-        if UNBALANCED_INERTIA not in str(error):
-            raise MjcfError(f"{shown}: MuJoCo refuses it: {' '.join(str(error).split())}") from None
+        if UNBALANCED_INERTIA not in str(error) or strict:
+            repair = "; --strict: balance_inertia would repair it" if strict else ""
+            raise MjcfError(f"{shown}: MuJoCo refuses it: {' '.join(str(error).split())}{repair}") from None
     balanced = load_urdf(reference, balance_inertia=True)
     return balanced, _compile(balanced, shown), True
 
@@ -108,9 +110,16 @@ def check_model_path(path: Path) -> Path:
     return resolved
 
 
-def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
+def repairs(source: MjcfSource) -> list[str]:
+    """The read's notes that say a value of the file was changed or left out (a visual of no size, a
+    ``<mimic>`` MuJoCo ignores, a balanced inertia), which ``new --strict`` refuses."""
+    return [note for note in source.notes if MUJOCO_IGNORES in note or note.startswith("balance_inertia:")]
+
+
+def read_model_file(path: Path, fixes: Sequence[MjcfFix] = (), strict: bool = False) -> ModelFile:
     """The MJCF or URDF at ``path``, read as a spec naming it would read it (its own folder allowed
-    when it is no package's; an MJCF repaired by ``fixes``), and compiled."""
+    when it is no package's; an MJCF repaired by ``fixes``), and compiled; ``strict``: refused when
+    MuJoCo reads it only with a repair or a value left out (:func:`repairs`)."""
     path = check_model_path(path)
     fmt = file_format(path)
     package = python_package_reference(path) or menagerie.reference_of(path)
@@ -118,5 +127,10 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = ()) -> ModelFile:
         package = share_reference(path)
     reference = package or str(path)
     with allowing([] if package else [path.parent]):
-        source, model, balanced = _read(path, reference, fmt, fixes)
+        source, model, balanced = _read(path, reference, fmt, fixes, strict)
+    changed = repairs(source) if strict else []
+    if changed:
+        raise MjcfError(
+            [Problem(f"{line}; --strict refuses a file read with a value left out") for line in changed]
+        )
     return ModelFile(path, fmt, reference, source, model, balanced)

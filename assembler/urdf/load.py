@@ -121,10 +121,7 @@ def _ignored(document: UrdfDocument) -> list[str]:
 def _notes(document: UrdfDocument, balanced: list[str], ignored: dict[Mimic, str]) -> tuple[str, ...]:
     notes = [f"the URDF's compiler {setting} was replaced" for setting in document.overridden]
     notes += _ignored(document)
-    if balanced:
-        notes.append(
-            f"balance_inertia: the inertia of {', '.join(balanced)} violated A + B >= C, made isotropic"
-        )
+    notes += [f"balance_inertia: {line}" for line in balanced]
     notes += [
         f"<mimic> {m.follower} = {m.multiplier:g} * {m.leader} + {m.offset:g} is a joint equality"
         for m in document.mimics
@@ -186,6 +183,8 @@ def _load(
     if unnamed:
         raise MjcfError(f"{shown}: every joint needs a name")
     # said once per version of the file, as MuJoCo's own warnings are
+    # balanced inertias are the spec's own choice (balance_inertia: true), kept in the notes (and in the
+    # comment new writes above that line), not said at every read
     for line in [*_ignored(document), *ignored.values(), *document.discarded]:
         warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))

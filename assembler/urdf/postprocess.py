@@ -30,6 +30,10 @@ from assembler.urdf.document import Mimic, UrdfDocument
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)
 
+MUJOCO_IGNORES = "as MuJoCo's URDF import"
+"""The words of every line saying that a value of the URDF is left out as MuJoCo's own import leaves it
+out (``new --strict`` refuses such a file)."""
+
 
 def _joint_equality(spec: mujoco.MjSpec, follower: str, leader: str) -> mujoco.MjsEquality | None:
     for equality in spec.equalities:
@@ -138,8 +142,14 @@ def _unbalanced(body: mujoco.MjsBody) -> bool:
     return bool(low + middle < high)
 
 
+def _numbers(values: NDArray[np.float64]) -> str:
+    return ", ".join(f"{v:.6g}" for v in values)
+
+
 def balance_inertias(spec: mujoco.MjSpec) -> list[str]:
-    """Make every inertia that violates A + B >= C isotropic at its mean moment; the bodies changed."""
+    """Make every inertia that violates A + B >= C isotropic at its mean moment; one line per body
+    changed, naming it with its inertia before and after (a full inertia's products are dropped, and
+    one whose matrix is not positive definite, which MuJoCo refuses even with balanceinertia, is said so)."""
     changed = []
     for body in spec.bodies[1:]:
         if not _unbalanced(body):
@@ -147,10 +157,21 @@ def balance_inertias(spec: mujoco.MjSpec) -> list[str]:
         moments, full = _moments(body)
         mean = float(np.mean(moments))
         if full:
+            before = f"full inertia ({_numbers(np.array(body.fullinertia, dtype=float))})"
             body.fullinertia = [mean, mean, mean, 0.0, 0.0, 0.0]
         else:
+            before = f"diagonal inertia ({_numbers(np.array(body.inertia, dtype=float))})"
             body.inertia = [mean, mean, mean]
-        changed.append(body.name)
+        why = "violates A + B >= C"
+        if np.min(moments) <= 0:
+            why = (
+                f"has principal moments ({_numbers(np.sort(moments))}) that are not all positive, which "
+                "MuJoCo refuses even with balanceinertia"
+            )
+        changed.append(
+            f"link '{body.name}': {before} {why}: made diagonal ({_numbers(np.array([mean] * 3))}), "
+            "isotropic at the mean of its principal moments"
+        )
     return changed
 
 

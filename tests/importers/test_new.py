@@ -428,3 +428,48 @@ def test_a_scene_whose_included_files_name_assets_from_the_main_files_folder_is_
     text = spec.read_text()
     assert "# decide: the file also holds twin_" in text
     assert "name: Tasks" in text  # a task scene is named after its folder
+
+
+UNBALANCED_URDF = """<robot name="wobbly">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="arm"><inertial><mass value="1"/><inertia ixx="0.001" iyy="0.001" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="5" velocity="1"/></joint>
+</robot>
+"""
+"""A link whose inertia violates A + B >= C, which MuJoCo reads only with balanceinertia."""
+
+SINGULAR = UNBALANCED_URDF.replace(
+    'ixx="0.001" iyy="0.001" izz="0.01" ixy="0" ixz="0" iyz="0"',
+    'ixx="0.001" iyy="0.001" izz="0.001" ixy="0.001" ixz="0.001" iyz="0.001"',
+)
+"""ANYmal C's ``hatch``: products that make the inertia singular, refused even with balanceinertia."""
+
+
+def test_an_inertia_made_valid_is_said_with_both_values_and_strict_refuses_it(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/wobbly.urdf", UNBALANCED_URDF)
+    spec = model.with_name("wobbly.yaml")
+    assert _new(model, spec, "--strict") == 1
+    err = capsys.readouterr().err
+    assert "inertia must satisfy A + B >= C" in err and "--strict: balance_inertia would repair it" in err
+    assert not spec.exists()
+    assert _new(model, spec) == 0
+    text = spec.read_text()
+    assert (
+        "# guess: link 'arm': full inertia (0.001, 0.001, 0.01, 0, 0, 0) violates A + B >= C: made diagonal "
+        "(0.004,\n#   0.004, 0.004), isotropic at the mean of its principal moments"
+    ) in text
+    assert "balance_inertia: true" in text and "new --strict refuses the file" in text
+    (cls,) = register_specs(spec)
+    compiled = assembler.create_robot(cls.__name__).get_model()
+    assert compiled.body("robot0_arm").inertia == pytest.approx([0.004] * 3)
+
+
+def test_an_inertia_mujoco_refuses_even_balanced_is_refused_with_its_reason(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    model = write("robots/wobbly.urdf", SINGULAR)
+    assert _new(model, model.with_name("wobbly.yaml")) == 1
+    assert "must have positive eigenvalues' in fullinertia Element name 'arm'" in capsys.readouterr().err
