@@ -24,6 +24,7 @@ import numpy as np
 import assembler
 from assembler.warp import batch as batch_module
 from assembler.warp import put_variants
+from assembler.warp.seeded_draws import plan_columns
 from assembler.worlds.variants.plan import Draw, Grid, VariantPlan
 
 TARGET = 20.0
@@ -66,7 +67,7 @@ def cpu_seconds(plan: VariantPlan) -> float:
     start = time.perf_counter()
     plan.check()
     indices = np.arange(plan.size)
-    columns = plan.columns(range(plan.size))
+    columns = plan_columns(plan, range(plan.size))
     effects = batch_module.laws_of(plan, robot, model, columns)
     rows = batch_module.world_rows(plan, robot, model, effects, indices, columns)
     fields = batch_module.model_fields()

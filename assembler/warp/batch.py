@@ -30,6 +30,7 @@ from assembler.spec.documents import Override, parse_overrides, parse_path
 from assembler.warp.device import resolve_dampratios, write_rows
 from assembler.warp.loading import mujoco_warp, warp_types
 from assembler.warp.plan_effects import NoEffects, PlanEffects, plan_effects
+from assembler.warp.seeded_draws import plan_columns
 from assembler.warp.world_values import (
     SET_CONST_ONLY,
     SET_CONST_OUTPUTS,
@@ -184,7 +185,7 @@ def world_rows(
         written = sorted({name for patch in patches for name in patch.fields} | set(SET_CONST_OUTPUTS))
         found = world_values(model, patches, [n for n in written if hasattr(model, n)])
         return Rows(found.values, found.qpos, found.ctrl)
-    positions, drawn = columns if columns is not None else plan.columns([int(i) for i in indices])
+    positions, drawn = columns if columns is not None else plan_columns(plan, [int(i) for i in indices])
     effects.validate(drawn)
     values = effects.arrays(positions, drawn, len(indices))
     qpos = values["key_qpos"][:, home] if "key_qpos" in values and home is not None else None
@@ -238,7 +239,7 @@ def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | Non
     robot: RobotModel = assemble(plan.robot, plan.idn, plan.base, grippers, overrides=list(plan.fixed))
     model = robot.get_model(cache=plan.cache, store=plan.store)
     indices = np.arange(plan.size, dtype=np.int64)
-    columns = plan.columns(range(plan.size))
+    columns = plan_columns(plan, range(plan.size))
     effects = laws_of(plan, robot, model, columns)
     rows = world_rows(plan, robot, model, effects, indices, columns)
     fields, batchable = model_fields(), batchable_fields()

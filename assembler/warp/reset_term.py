@@ -28,6 +28,7 @@ from assembler.warp.batch import batchable_fields, laws_of, world_rows
 from assembler.warp.device import resolve_dampratios, write_rows
 from assembler.warp.loading import mujoco_warp
 from assembler.warp.plan_effects import NoEffects, plan_effects
+from assembler.warp.seeded_draws import plan_columns
 from assembler.warp.world_values import SET_CONST_OUTPUTS
 from assembler.worlds.variants.plan import VariantPlan
 
@@ -104,7 +105,7 @@ class ResampleAtReset:
             plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=list(plan.fixed)
         )
         self.model = self.robot.get_model(cache=plan.cache, store=plan.store)
-        self.effects = laws_of(plan, self.robot, self.model, plan.columns(range(plan.size)))
+        self.effects = laws_of(plan, self.robot, self.model, plan_columns(plan, range(plan.size)))
         written = self._written()
         derived = [name for name in SET_CONST_OUTPUTS if name in batchable_fields()]
         if self.effects is not None and self.effects.dampratio:
@@ -122,7 +123,7 @@ class ResampleAtReset:
         """The batchable model fields the plan's values write: the laws' fields (probed even where this
         MuJoCo's dampratio rule has every world patched on CPU), else those of every world's patch."""
         batchable = batchable_fields()
-        columns = self.plan.columns(range(self.plan.size))
+        columns = plan_columns(self.plan, range(self.plan.size))
         try:
             probed = plan_effects(self.plan, self.robot, self.model, *columns)
         except NoEffects:

@@ -152,20 +152,24 @@ class VariantPlan:
             chosen |= {draw.key: draw.sample(rng) for draw in self.draws}
         return chosen
 
-    def columns(
-        self, indices: Sequence[int]
-    ) -> tuple[dict[str, NDArray[np.int64]], dict[str, NDArray[np.float64]]]:
-        """The values of :meth:`variant` at ``indices``, field by field: each grid's position in its
-        values (``grid.values[position]``) and each draw's value, one array entry per index."""
+    def positions(self, indices: Sequence[int]) -> dict[str, NDArray[np.int64]]:
+        """Each grid's position in its values (``grid.values[position]``) at ``indices``."""
         positions: dict[str, NDArray[np.int64]] = {}
         point = np.asarray(indices, dtype=np.int64) // self.count
         for grid in reversed(self.grids):
             point, positions[grid.key] = np.divmod(point, len(grid.values))
+        return positions
+
+    def columns(
+        self, indices: Sequence[int]
+    ) -> tuple[dict[str, NDArray[np.int64]], dict[str, NDArray[np.float64]]]:
+        """The values of :meth:`variant` at ``indices``, field by field: each grid's position
+        (:meth:`positions`) and each draw's value, one array entry per index."""
         drawn = np.empty((len(self.draws), len(indices)))
         for column, index in enumerate(indices):  # one generator per variant, as variant() draws
             rng = np.random.default_rng([self.seed, index])
             drawn[:, column] = [draw.sample(rng) for draw in self.draws]
-        return positions, {draw.key: drawn[row] for row, draw in enumerate(self.draws)}
+        return self.positions(indices), {draw.key: drawn[row] for row, draw in enumerate(self.draws)}
 
     def variants(self, indices: Iterable[int] | None = None) -> Iterator[dict[str, Any]]:
         """The overrides of the variants at ``indices`` (default: all, in index order), one at a time."""
