@@ -251,11 +251,8 @@ def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | Non
     varied = sorted(written | derived)
     nworld = plan.size
     warp_model = mujoco_warp.put_model(model, batch_sizes={name: nworld for name in varied})
-    for name in written:
-        target = getattr(warp_model, name)
-        target.assign(
-            rows.values[name].reshape(target.shape[0], -1).astype(np.float32).reshape(target.numpy().shape)
-        )
+    for name in written:  # uploaded and written on the device: nothing of the model is read back
+        write_rows(getattr(warp_model, name), indices, rows.values[name])
     home = mujoco.MjData(model)
     if model.nkey:
         mujoco.mj_resetDataKeyframe(model, home, mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY))
