@@ -1,5 +1,6 @@
-"""A plan re-drawn at mjlab's resets: the term writes each reset environment's new values into mjlab's
-MuJoCo Warp model in place, equal to the CPU model of the drawn overrides."""
+"""A plan re-drawn at mjlab's resets (``assembler.warp.reset_term``; here, where CI's mjlab stage runs
+it): the term writes each reset environment's new values into mjlab's MuJoCo Warp model in place,
+equal to the CPU model of the drawn overrides."""
 
 from __future__ import annotations
 
