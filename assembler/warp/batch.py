@@ -137,10 +137,14 @@ class WarpBatch:
         """World ``world``'s varied values, as :meth:`VariantPlan.variant` gives them."""
         return dataclasses.replace(self.plan, seed=int(self.seeds[world])).variant(world)
 
+    def world_overrides(self, world: int) -> list[str]:
+        """World ``world``'s ``PATH=VALUE`` overrides (the plan's ``--set`` first), for ``assemble``."""
+        return override_texts(self.plan, self.variant(world))
+
     @property
     def overrides(self) -> list[list[str]]:
-        """Each world's ``PATH=VALUE`` overrides (the plan's ``--set`` first), as ``assemble`` takes them."""
-        return [override_texts(self.plan, self.variant(world)) for world in range(self.nworld)]
+        """Every world's :meth:`world_overrides`, made when asked (after :meth:`resample`: its draws)."""
+        return [self.world_overrides(world) for world in range(self.nworld)]
 
     def resample(self, worlds: Sequence[int] | NDArray[np.int64], seed: int) -> None:
         """Draw new values for ``worlds`` (the plan's draws with ``seed``; each world keeps its grid

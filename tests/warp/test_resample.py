@@ -40,7 +40,7 @@ def _cpu_model(overrides: list[str]) -> mujoco.MjModel:
 
 
 def _assert_world_is_its_cpu_model(batch: WarpBatch, world: int) -> None:
-    cpu = _cpu_model(batch.overrides[world])
+    cpu = _cpu_model(batch.world_overrides(world))
     for name in batch.varied:
         expected = getattr(cpu, name)
         ours = getattr(batch.model, name).numpy()[world].reshape(expected.shape)
@@ -69,7 +69,7 @@ def test_dof_length_under_a_size_scale_is_listed_with_why_each_world_keeps_the_r
 ) -> None:
     assert set(batch.nominal) == {"dof_length"}
     assert "sleeping only" in batch.nominal["dof_length"]
-    assert not np.array_equal(_cpu_model(batch.overrides[5]).dof_length, batch.cpu_model.dof_length)
+    assert not np.array_equal(_cpu_model(batch.world_overrides(5)).dof_length, batch.cpu_model.dof_length)
 
 
 def test_resample_writes_new_draws_into_the_same_model_and_leaves_other_worlds(batch: WarpBatch) -> None:
