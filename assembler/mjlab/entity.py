@@ -8,6 +8,10 @@
   the compiled gains and force limits, and ``spec_fn`` then leaves the assembly's actuators out.
 - ``init_state`` holds the home pose joint by joint. mjlab's ``joint_pos=None`` (take the spec's
   keyframe) fails at reset on a float64/float32 mismatch in mjlab 1.6.0, so the pose is always given.
+- The spec's ``mjlab:`` block (:mod:`~assembler.mjlab.task_parts`) adds the IMU and the feet, sets the
+  soft joint-limit factor, the feet's collision settings and the spawn pose; a robot given by name is
+  assembled with the joint rules its spec writes only (robosuite's with ``mjlab.joint_rules: robosuite``)
+  and with a free joint or without as ``mjlab.floating`` says.
 """
 
 from __future__ import annotations
@@ -20,11 +24,14 @@ import mujoco
 from mjlab.actuator import BuiltinMotorActuatorCfg, BuiltinPositionActuatorCfg, XmlActuatorCfg
 from mjlab.actuator.actuator import ActuatorCfg
 from mjlab.entity import EntityArticulationInfoCfg, EntityCfg
+from mjlab.sensor import ContactSensorCfg
 
 from assembler.errors import AssemblerError, Problem
 from assembler.mjcf.keyframe import HOME_KEY
+from assembler.mjlab.task_parts import TaskParts, foot_collisions, task_parts
 from assembler.models import RobotModel
-from assembler.registry.instances import assemble
+from assembler.registry.instances import assemble, robot_class
+from assembler.spec.schema.joints import JOINT_RULE_ATTRIBUTES
 
 ActuatorChoice = Literal["xml", "builtin"]
 """``xml``: mjlab drives the assembly's own actuators; ``builtin``: mjlab's built-in configs replace them."""
@@ -110,7 +117,7 @@ def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
     return tuple(configs)
 
 
-def _spec_fn(robot: RobotModel, keep_actuators: bool) -> Callable[[], mujoco.MjSpec]:
+def _spec_fn(robot: RobotModel, keep_actuators: bool, parts: TaskParts) -> Callable[[], mujoco.MjSpec]:
     def spec() -> mujoco.MjSpec:
         copy = robot.mjspec.copy()
         for key in list(copy.keys):
@@ -118,9 +125,34 @@ def _spec_fn(robot: RobotModel, keep_actuators: bool) -> Callable[[], mujoco.MjS
         if not keep_actuators:
             for actuator in list(copy.actuators):
                 copy.delete(actuator)
+        parts.edit(copy)
         return copy
 
     return spec
+
+
+def _has_free_joint(model: mujoco.MjModel) -> bool:
+    return any(int(t) == int(mujoco.mjtJoint.mjJNT_FREE) for t in model.jnt_type)
+
+
+def for_mjlab(name: str) -> RobotModel:
+    """Robot ``name`` assembled as its spec's ``mjlab:`` block asks: the joint default rules the spec
+    writes only (robosuite's too with ``joint_rules: robosuite``), floating or welded per ``floating``."""
+    spec = robot_class(name).spec
+    options = spec.mjlab
+    overrides: list[str] = []
+    if options.joint_rules == "spec":
+        written = spec.joint_defaults.model_fields_set if "joint_defaults" in spec.model_fields_set else set()
+        overrides += [f"joint_defaults.{a}=null" for a in JOINT_RULE_ATTRIBUTES if a not in written]
+    model = assemble(name, overrides=overrides or None)
+    if options.floating is None or _has_free_joint(model.get_model()) == options.floating:
+        return model
+    if not options.floating:
+        return assemble(name, overrides=[*overrides, "remove_free_joint=true"])
+    model = assemble(name, overrides=[*overrides, "remove_free_joint=false"])
+    if _has_free_joint(model.get_model()):
+        return model
+    return assemble(name, overrides=[*overrides, "add_free_joint=true"])
 
 
 def entity_cfg(
@@ -128,11 +160,14 @@ def entity_cfg(
     actuators: ActuatorChoice = "xml",
     pos: tuple[float, float, float] | None = None,
 ) -> EntityCfg:
-    """The robot (a RobotModel, or a registered name assembled with its default base and grippers)
-    as an mjlab ``EntityCfg``: its spec, its actuators (``actuators``), its home pose as
-    ``init_state`` (the root at ``pos`` when given, else where the home keyframe puts it)."""
-    model = assemble(robot) if isinstance(robot, str) else robot
+    """The robot (a RobotModel as assembled, or a registered name assembled by :func:`for_mjlab`) as an
+    mjlab ``EntityCfg``: its spec with the IMU and feet its ``mjlab:`` block asks for, its actuators
+    (``actuators``), its home pose as ``init_state``, the root at ``pos`` when given, else at
+    ``mjlab.spawn_pos``, else standing on the floor if it floats (its lowest collision point at z = 0)
+    or where the home pose puts it if it is welded."""
+    model = for_mjlab(robot) if isinstance(robot, str) else robot
     compiled = model.get_model()
+    parts = task_parts(model, compiled)
     root, joint_pos = home_joint_positions(compiled)
     actuated = [
         mujoco.mj_id2name(compiled, JOINT, int(compiled.actuator_trnid[a, 0]))
@@ -147,11 +182,23 @@ def entity_cfg(
         configs = mapped_actuators(compiled)
     state = EntityCfg.InitialStateCfg(joint_pos={_exact(j): v for j, v in joint_pos.items()})
     if root is not None:
-        state.pos, state.rot = (root[0], root[1], root[2]), (root[3], root[4], root[5], root[6])
-    if pos is not None:
-        state.pos = pos
+        state.pos = (root[0], root[1], root[2] - parts.lowest)
+        state.rot = (root[3], root[4], root[5], root[6])
+    spawn = pos if pos is not None else model.spec.mjlab.spawn_pos
+    if spawn is not None:
+        state.pos = spawn
     return EntityCfg(
-        spec_fn=_spec_fn(model, keep_actuators=actuators == "xml"),
-        articulation=EntityArticulationInfoCfg(actuators=configs),
+        spec_fn=_spec_fn(model, keep_actuators=actuators == "xml", parts=parts),
+        articulation=EntityArticulationInfoCfg(
+            actuators=configs, soft_joint_pos_limit_factor=model.spec.mjlab.soft_joint_pos_limit_factor
+        ),
         init_state=state,
+        collisions=foot_collisions(model, compiled, parts),
     )
+
+
+def feet_sensor(robot: RobotModel | str, entity: str = "robot") -> ContactSensorCfg:
+    """The feet contact sensor mjlab's velocity task reads (``feet_ground_contact``) for the robot as
+    :func:`entity_cfg` makes it, scoped to the scene entity named ``entity``."""
+    model = for_mjlab(robot) if isinstance(robot, str) else robot
+    return task_parts(model, model.get_model()).feet_sensor(entity)

@@ -15,6 +15,7 @@ from assembler.spec.schema.expressions import (
     parse_expression,
 )
 from assembler.spec.schema.joints import JointDefaults
+from assembler.spec.schema.mjlab import MjlabOptions
 from assembler.spec.schema.parts import Name, PartSpec
 from assembler.spec.schema.robosuite import RobosuiteOptions
 
@@ -135,6 +136,10 @@ class RobotSpec(PartSpec):
     robosuite: RobosuiteOptions = Field(default_factory=RobosuiteOptions)
     """How the robot enters robosuite's environments (docs/robosuite.md); every field has a default by
     arms, base and morphology."""
+
+    mjlab: MjlabOptions = Field(default_factory=MjlabOptions)
+    """What mjlab's tasks read of the robot (`assembler.mjlab.entity_cfg`): IMU, feet, joint-limit factor,
+    spawn pose (docs/gpu.md); every field has a default."""
 
     base_xpos_offset: dict[str, Offset3] = Field(default_factory=dict)
     """Placement of the robot's base per arena (e.g. bins, empty, table); entries may use table_length.

@@ -1,0 +1,66 @@
+"""``use_robot(cfg, robot)``: a spec robot in mjlab's own velocity task, its per-robot slots filled.
+
+mjlab's ``make_velocity_env_cfg()`` is its velocity task for any robot: it leaves the robot's entity and
+the names it reads of it empty ("Set per-robot"), and its Go1 and G1 configs fill them. This fills the
+same slots for a spec robot, and nothing else of the task: the entity (:func:`entity_cfg`), the feet
+contact sensor, the root body (terrain scan frame, base COM, upright and body angular-velocity terms,
+viewer), the feet's sites (foot height scan, clearance and slip terms) and collision geoms (friction
+randomization), and the posture reward's per-joint spreads.
+"""
+
+from __future__ import annotations
+
+import re
+
+from mjlab.envs import ManagerBasedRlEnvCfg
+from mjlab.sensor import ObjRef, RayCastSensorCfg, RingPatternCfg, TerrainHeightSensorCfg
+
+from assembler.mjlab.entity import entity_cfg, for_mjlab
+from assembler.mjlab.task_parts import task_parts
+from assembler.models import RobotModel
+
+POSTURE_STD = {"std_standing": 0.05, "std_walking": 0.3, "std_running": 0.5}
+"""The posture reward's spread for every joint: mjlab's G1 standing value (0.05 for all joints), and its
+hip-pitch values walking (0.3) and running (0.5)."""
+
+
+def use_robot(
+    cfg: ManagerBasedRlEnvCfg, robot: RobotModel | str, entity: str = "robot"
+) -> ManagerBasedRlEnvCfg:
+    """mjlab's velocity task config ``cfg`` (``make_velocity_env_cfg()``) with ``robot`` as its entity
+    ``entity`` and every per-robot slot filled from the robot's spec; changed in place and returned."""
+    model = for_mjlab(robot) if isinstance(robot, str) else robot
+    parts = task_parts(model, model.get_model())
+    cfg.scene.entities = {**cfg.scene.entities, entity: entity_cfg(model)}
+    sites = tuple(re.escape(site) for _, site, _ in parts.feet)
+    root = re.escape(parts.root)
+    for sensor in cfg.scene.sensors:
+        if (
+            isinstance(sensor, RayCastSensorCfg)
+            and isinstance(sensor.frame, ObjRef)
+            and not sensor.frame.name
+        ):
+            sensor.frame.name = parts.root
+        if isinstance(sensor, TerrainHeightSensorCfg) and not sensor.frame:
+            sensor.frame = tuple(ObjRef(type="site", name=s, entity=entity) for _, s, _ in parts.feet)
+            sensor.pattern = RingPatternCfg.single_ring(radius=0.03, num_samples=6)  # mjlab's G1 ring
+    cfg.scene.sensors = (*cfg.scene.sensors, parts.feet_sensor(entity))
+    terms = {**cfg.events, **cfg.rewards}
+    for term in terms.values():
+        asset = term.params.get("asset_cfg")
+        if asset is None or asset.name != entity:
+            continue
+        if asset.body_names == ():
+            asset.body_names = (root,)
+        if asset.site_names == ():
+            asset.site_names = sites
+        if asset.geom_names == ():
+            asset.geom_names = tuple(re.escape(g) for g in parts.foot_geoms)
+    posture = cfg.rewards.get("pose")
+    if posture is not None:
+        for key, spread in POSTURE_STD.items():
+            if posture.params.get(key) == {}:
+                posture.params[key] = {".*": spread}
+    if not cfg.viewer.body_name:
+        cfg.viewer.body_name = parts.root
+    return cfg

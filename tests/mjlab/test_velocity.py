@@ -1,0 +1,114 @@
+"""Spec robots in mjlab's own velocity task, as their specs' ``mjlab:`` blocks declare them.
+
+Needs mjlab (``pip install -e ".[mjlab,urdf]" "torch==2.13.0+cpu"``; CI: .ci/mjlab); skipped, saying so,
+where it is absent. Each run builds mjlab's rough terrain and steps on CPU: about 75 s.
+"""
+
+from __future__ import annotations
+
+import re
+import warnings
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.script, deprecated in torch 2.13
+    warnings.simplefilter("ignore", DeprecationWarning)
+    pytest.importorskip("mjlab", reason='mjlab is not installed (pip install -e ".[mjlab]"; CI: .ci/mjlab)')
+    torch = pytest.importorskip("torch")
+    from mjlab.envs import ManagerBasedRlEnv
+    from mjlab.tasks.velocity.velocity_env_cfg import make_velocity_env_cfg
+
+    from assembler.mjlab import entity_cfg, for_mjlab
+    from assembler.mjlab.task_parts import geom_lowest
+    from assembler.mjlab.velocity import use_robot
+    from assembler.urdf.packages import package_folders
+
+DOCS = Path(__file__).parents[2] / "docs" / "gpu.md"
+
+
+def _needs_urdf(name: str) -> None:
+    if name == "G1" and not package_folders("example-robot-data"):
+        pytest.skip('the G1 needs the urdf extra (pip install -e ".[urdf]")')
+
+
+def test_the_docs_example_runs_mjlabs_velocity_task_with_the_shipped_biped_for_50_steps(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    (example,) = [
+        block
+        for block in re.findall(r"```python\n(.*?)```", DOCS.read_text(), flags=re.DOTALL)
+        if "make_velocity_env_cfg" in block
+    ]
+    namespace: dict[str, object] = {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        exec(compile(example, "docs/gpu.md", "exec"), namespace)
+    env = namespace["env"]
+    assert isinstance(env, ManagerBasedRlEnv)
+    assert env.common_step_counter == 50 and "feet_ground_contact" in env.scene.sensors
+    assert torch.isfinite(env.scene["robot"].data.joint_pos).all()
+    printed = capsys.readouterr().out.splitlines()[-1]
+    assert printed == "['robot/imu_ang_vel', 'robot/imu_lin_vel']"
+    assert f"# {printed}" in example
+    env.close()
+
+
+def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_else_changed() -> None:
+    _needs_urdf("G1")
+    cfg = make_velocity_env_cfg()  # mjlab's task, for any robot: its per-robot slots are empty
+    use_robot(cfg, "G1")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # mjlab's and warp's notes about CPU-only runs
+        env = ManagerBasedRlEnv(cfg, device="cpu")
+        env.reset()
+        actions = torch.zeros((env.num_envs, env.action_manager.total_action_dim))
+        for _ in range(50):
+            _, reward, _, _, _ = env.step(actions)
+    sensors = env.scene.sensors
+    assert {"robot/imu_lin_vel", "robot/imu_ang_vel", "robot/root_angmom", "feet_ground_contact"} <= set(
+        sensors
+    )
+    assert env.common_step_counter == 50
+    assert torch.isfinite(reward).all() and torch.isfinite(env.scene["robot"].data.joint_pos).all()
+    env.close()
+
+
+@pytest.mark.parametrize(("name", "height"), [("BipedFree", 1.01433), ("G1", 0.7842)])
+def test_a_floating_robot_spawns_with_its_lowest_collision_point_on_the_floor(
+    name: str, height: float
+) -> None:
+    _needs_urdf(name)
+    cfg = entity_cfg(name)
+    # BipedFree: its MJCF's standing height (the soles on the floor); G1: mjlab's own G1 spawns at 0.7837
+    assert cfg.init_state.pos[2] == pytest.approx(height, abs=1e-4)
+    spec = cfg.spec_fn()  # our robot as mjlab gets it, put where mjlab puts it
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    free = model.jnt_qposadr[0]
+    data.qpos[free : free + 3], data.qpos[free + 3 : free + 7] = cfg.init_state.pos, cfg.init_state.rot
+    for joint, value in cfg.init_state.joint_pos.items():
+        data.qpos[model.joint(joint.replace("\\", "")).qposadr[0]] = value
+    mujoco.mj_kinematics(model, data)
+    collision = [g for g in range(model.ngeom) if model.geom_contype[g] or model.geom_conaffinity[g]]
+    assert min(geom_lowest(model, data, g) for g in collision) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_the_g1_floats_in_mjlab_with_its_motors_armature_and_mjlabs_joint_limit_factor() -> None:
+    _needs_urdf("G1")
+    model = for_mjlab("G1").get_model()  # the spec welds the pelvis; its mjlab block floats it
+    assert model.jnt_type[0] == mujoco.mjtJoint.mjJNT_FREE
+    # the 7520-22 knee motor's reflected inertia (specs/motors), not robosuite's 5/(i+1) rule
+    assert model.joint("robot0_left_knee_joint").armature[0] == pytest.approx(0.0251019, rel=1e-5)
+    assert entity_cfg("G1").articulation.soft_joint_pos_limit_factor == 0.9
+
+
+def test_robosuites_joint_rules_stay_out_of_an_mjlab_entity_unless_the_spec_asks() -> None:
+    model = for_mjlab("BipedFree").get_model()
+    # BipedFree's MJCF sets no armature, damping or friction loss; robosuite's rules would give the
+    # first hip 5.0 kg m^2 (5/(i+1)) and every joint 0.1 damping and friction loss
+    np.testing.assert_array_equal(model.dof_armature[6:], 0.0)
+    np.testing.assert_array_equal(model.dof_damping[6:], 0.0)
+    np.testing.assert_array_equal(model.dof_frictionloss[6:], 0.0)
