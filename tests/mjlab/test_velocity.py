@@ -18,12 +18,15 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
     warnings.simplefilter("ignore", DeprecationWarning)
     pytest.importorskip("mjlab", reason='mjlab is not installed (pip install -e ".[mjlab]"; CI: .ci/mjlab)')
     torch = pytest.importorskip("torch")
+    from mjlab.entity.entity import Entity
     from mjlab.envs import ManagerBasedRlEnv
     from mjlab.tasks.velocity.velocity_env_cfg import make_velocity_env_cfg
 
+    from assembler.errors import AssemblerError
     from assembler.mjlab import entity_cfg, for_mjlab
     from assembler.mjlab.task_parts import geom_lowest
     from assembler.mjlab.velocity import use_robot
+    from assembler.registry.instances import assemble
     from assembler.urdf.packages import package_folders
 
 DOCS = Path(__file__).parents[2] / "docs" / "gpu.md"
@@ -112,3 +115,22 @@ def test_robosuites_joint_rules_stay_out_of_an_mjlab_entity_unless_the_spec_asks
     np.testing.assert_array_equal(model.dof_armature[6:], 0.0)
     np.testing.assert_array_equal(model.dof_damping[6:], 0.0)
     np.testing.assert_array_equal(model.dof_frictionloss[6:], 0.0)
+
+
+def test_a_welded_robot_stays_where_its_home_pose_puts_it_unless_told() -> None:
+    cfg = entity_cfg("Biped")  # the pelvis welded 1.01433 m above the floor, as the MJCF places it
+    model = Entity(cfg).spec.compile()  # mjlab's entity: the robot under a mocap body at init_state.pos
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    assert not any(t == mujoco.mjtJoint.mjJNT_FREE for t in model.jnt_type)
+    assert cfg.init_state.pos == (0.0, 0.0, 0.0)
+    np.testing.assert_allclose(data.body("robot0_pelvis").xpos, [0.0, 0.0, 1.01433])
+    assert entity_cfg("Biped", pos=(0.0, 0.0, 0.2)).init_state.pos == (0.0, 0.0, 0.2)
+
+
+def test_an_imu_body_the_robot_lacks_is_named_with_the_closest_body() -> None:
+    robot = assemble("BipedFree", overrides=["mjlab.imu_body=pelviss"])
+    with pytest.raises(
+        AssemblerError, match=r"mjlab.imu_body: no body 'pelviss' in the robot. Did you mean 'pelvis'\?"
+    ):
+        entity_cfg(robot)
