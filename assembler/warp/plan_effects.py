@@ -20,6 +20,7 @@ list (a range's low and high, which a rule may compare) are not taken apart this
 
 from __future__ import annotations
 
+import functools
 import json
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -34,6 +35,24 @@ from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import Override, parse_overrides, parse_path
 from assembler.worlds.variants.plan import VariantPlan
+
+COUPLED_ARM = """\
+<mujoco>
+  <worldbody>
+    <body>
+      <joint name="hinge" axis="0 1 0"/>
+      <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03"/>
+      <body pos="0.3 0 0">
+        <joint axis="0 1 0"/>
+        <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator><position joint="hinge" kp="100" dampratio="1"/></actuator>
+</mujoco>
+"""
+"""Two hinges about one axis in a chain (their inertia coupled, where MuJoCo's two dampratio rules
+differ), with a dampratio: what this MuJoCo's compiler does with one, read off it once."""
 
 RELATIVE = 1e-9
 """How closely a third probe must follow the law two probes give (relative, floating-point noise)."""
@@ -100,6 +119,14 @@ class PlanEffects:
                 values[:, entries] *= (drawn[key][:, None] / reference) ** powers
             out[name] = values.reshape(n, *effects.shape)
         return out
+
+
+@functools.cache
+def compiler_dampratio_rule() -> str:
+    """How this MuJoCo's compiler turns a dampratio into ``biasprm[2]`` (``"diagonal"``: MuJoCo 3's
+    ``dof_M0``; ``"inverse"``: 4's ``1 / (M^-1)_ii``), read off :data:`COUPLED_ARM` compiled once: a
+    robot whose joints are not coupled at qpos0 cannot tell the two apart."""
+    return dampratio_rule(mujoco.MjModel.from_xml_string(COUPLED_ARM), {0: 1.0})
 
 
 def _written(model: mujoco.MjModel, patch: ModelPatch) -> dict[str, NDArray[np.float64]]:
@@ -202,7 +229,7 @@ def plan_effects(
     def check(key: str, value: float) -> None:
         patch_of(reference | {key: value}, f"{key}={json.dumps(value)}")
 
-    rule = dampratio_rule(model, ref_patch.dampratio)
+    rule = compiler_dampratio_rule()
     return PlanEffects(fields, dict(ref_patch.dampratio), rule, validated, check)
 
 

@@ -4,6 +4,8 @@ is still its variant's CPU model."""
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -15,6 +17,9 @@ import assembler  # noqa: E402
 from assembler.errors import SpecError  # noqa: E402
 from assembler.warp import WarpBatch, put_variants  # noqa: E402
 from assembler.worlds.variants.plan import Draw, Grid, VariantPlan  # noqa: E402
+from tests.patch.test_patchable import DECLARED, DECLARED_MJCF  # noqa: E402
+
+Write = Callable[[str, str], Path]
 
 PLAN = VariantPlan(
     "Sparrow7",
@@ -140,3 +145,29 @@ def test_a_normal_draw_beyond_the_values_validated_is_validated_when_resampled()
     assert batch.effects.validated["bodies[0].mass_scale"] == (low, high + 0.5)
     with pytest.raises(SpecError, match=r"^--normal bodies\[0\].mass_scale: Input should be greater than 0$"):
         batch.effects.validate({"bodies[0].mass_scale": np.array([0.5, -0.2])})
+
+
+def test_actuator_gains_and_gears_drawn_per_world_equal_their_cpu_models_dampratio_included(
+    write: Write,
+) -> None:
+    write("d/twolink.xml", DECLARED_MJCF)
+    assembler.register_specs(write("d/declared.yaml", DECLARED))
+    plan = VariantPlan(
+        "Declared",
+        draws=(
+            Draw.parse("actuators[0].kp=150:300", "uniform"),  # a position servo with a dampratio
+            Draw.parse("actuators[1].gear=1:3", "uniform"),
+        ),
+        random=16,
+        seed=4,
+    )
+    batch = put_variants(plan)
+    assert batch.effects is not None and batch.effects.dampratio
+    assert {"actuator_gainprm", "actuator_biasprm", "actuator_gear", "actuator_acc0"} <= set(batch.varied)
+    batch.resample([2, 9], seed=21)
+    for world in (0, 2, 9, 15):
+        cpu = assembler.assemble("Declared", overrides=batch.world_overrides(world)).get_model(cache=False)
+        for name in batch.varied:
+            expected = getattr(cpu, name)
+            ours = getattr(batch.model, name).numpy()[world].reshape(expected.shape)
+            np.testing.assert_allclose(ours, expected, rtol=2e-6, atol=2e-6, err_msg=f"world {world}: {name}")
