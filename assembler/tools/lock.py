@@ -259,14 +259,19 @@ def write_lock(paths: Sequence[str | Path]) -> tuple[Path, Lock]:
 
 def read_lock(path: Path) -> Lock:
     """A lock file's content; one line naming the line when it is not a lock."""
-    lock = Lock("", {})
-    current: RobotLock | None = None
     try:
         text = path.read_text()
     except OSError as error:
         raise AssemblerError(
             f"{display_path(path)}: cannot read it ({error.strerror}); run `assembler lock`"
         ) from None
+    return parse_lock(text, display_path(path))
+
+
+def parse_lock(text: str, shown: str) -> Lock:
+    """A lock's text as a :class:`Lock`; ``shown`` names it in the one line a malformed line gets."""
+    lock = Lock("", {})
+    current: RobotLock | None = None
     for number, line in enumerate(text.splitlines(), 1):
         words = line.split()
         if not words or words[0].startswith("#"):
@@ -281,8 +286,7 @@ def read_lock(path: Path) -> Lock:
             current.files[(words[0], words[1])] = words[2]
         else:
             raise AssemblerError(
-                f"{display_path(path)}:{number}:1: not a line of a lock file; "
-                "write it again with `assembler lock`"
+                f"{shown}:{number}:1: not a line of a lock file; write it again with `assembler lock`"
             )
     return lock
 
@@ -343,3 +347,33 @@ def check_locked(start: Path | None = None) -> tuple[Path, int]:
         problems.append(Problem(f"{display_path(path)}: run `assembler lock` to accept these changes"))
         raise AssemblerError(problems)
     return path, sum(len(robot.files) for robot in read_lock(path).robots.values())
+
+
+def lock_changes(before: Lock, after: Lock) -> list[str]:
+    """A lock change as the robots it changes: for each robot whose files or packages differ, one line
+    naming it and one per file or package (old and new digest or version); MuJoCo's version first."""
+    lines = (
+        [f"mujoco {before.mujoco} -> {after.mujoco}: every robot"] if before.mujoco != after.mujoco else []
+    )
+    for name in sorted({*before.robots, *after.robots}):
+        old, new = before.robots.get(name), after.robots.get(name)
+        if old is None or new is None:
+            lines.append(f"robot {name}: {'added' if old is None else 'removed'}")
+            continue
+        changed = [
+            f"  package {package}: {old.packages.get(package, '-')} -> {new.packages.get(package, '-')}"
+            for package in sorted({*old.packages, *new.packages})
+            if old.packages.get(package) != new.packages.get(package)
+        ]
+        changed += [
+            f"  {kind} {path}: {_short(old.files.get((kind, path)))} -> {_short(new.files.get((kind, path)))}"
+            for kind, path in sorted({*old.files, *new.files})
+            if old.files.get((kind, path)) != new.files.get((kind, path))
+        ]
+        if changed:
+            lines += [f"robot {name}: {len(changed)} change{'s' if len(changed) != 1 else ''}", *changed]
+    return lines
+
+
+def _short(digest: str | None) -> str:
+    return "-" if digest is None else digest[:12]

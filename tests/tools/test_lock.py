@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import hashlib
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -103,4 +104,28 @@ def test_without_a_lock_or_outside_a_repository_it_is_one_line(
     assert (code, err) == (
         1,
         "robot-assembler.lock:3:1: not a line of a lock file; write it again with `assembler lock`\n",
+    )
+
+
+def test_diff_of_two_locks_shows_the_robots_a_change_affects_with_each_file(
+    capsys: pytest.CaptureFixture[str], lab: Path
+) -> None:
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
+    shutil.rmtree(lab / ".git")
+    subprocess.run([*git, "init", "-q"], cwd=lab, check=True)
+    assert run(capsys, "lock")[0] == 0
+    subprocess.run([*git, "add", "-A"], cwd=lab, check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "locked"], cwd=lab, check=True)
+    model = lab / "assets" / "sparrow7" / "sparrow7.xml"
+    old = hashlib.sha256(model.read_bytes()).hexdigest()
+    model.write_text(model.read_text() + "<!-- edited -->\n")
+    new = hashlib.sha256(model.read_bytes()).hexdigest()
+    assert run(capsys, "lock")[0] == 0
+    code, out, _ = run(capsys, "diff", "robot-assembler.lock@HEAD", "robot-assembler.lock", "--exit-code")
+    assert (code, out.splitlines()) == (
+        1,
+        ["robot Arm7: 1 change", f"  model assets/sparrow7/sparrow7.xml: {old[:12]} -> {new[:12]}"],
+    )
+    assert (
+        run(capsys, "diff", "robot-assembler.lock", "robot-assembler.lock")[1] == "the locks are the same\n"
     )

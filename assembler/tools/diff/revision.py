@@ -63,16 +63,23 @@ def repository_of(path: Path) -> Path:
         ) from None
 
 
-def _document_at(path: Path, revision: str, repository: Path) -> LocatedDocument:
+def text_at(path: Path, revision: str, repository: Path | None = None) -> str:
+    """The text of ``path`` (any file of a git repository, found when not given) at ``revision``; one
+    line if git cannot."""
+    repository = repository or repository_of(path)
     relative = path.resolve().relative_to(repository).as_posix()
-    shown = f"{display_path(path)}@{revision}"
     try:
-        text = _git(repository, "show", f"{revision}:{relative}")
+        return _git(repository, "show", f"{revision}:{relative}")
     except SpecError as error:
+        shown = f"{display_path(path)}@{revision}"
         raise SpecError(
             Problem(f"cannot read it from git: {error.problems[0].message}", None, shown)
         ) from None
-    document = parse_yaml(text, shown, path.resolve().parent)
+
+
+def _document_at(path: Path, revision: str, repository: Path) -> LocatedDocument:
+    text = text_at(path, revision, repository)
+    document = parse_yaml(text, f"{display_path(path)}@{revision}", path.resolve().parent)
     resolve_path_fields(document)  # relative to the file's folder, as for files on disk
     return document
 
