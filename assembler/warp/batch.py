@@ -229,6 +229,10 @@ def laws_of(
         LOG.debug("%s: each world patched on CPU: %s", plan.robot, reason)
         return None
     if effects.dampratio and effects.rule != "inverse":
+        varying = {name for name, laws in effects.fields.items() if laws.sets or laws.tables or laws.scales}
+        if varying <= NO_DERIVED - {"actuator_gainprm", "actuator_biasprm"}:
+            effects.dampratio = {}  # nothing a dampratio reads varies: each keeps the compiled biasprm[2]
+            return effects
         LOG.debug("%s: each world patched on CPU: dampratios by this MuJoCo's diagonal rule", plan.robot)
         return None
     return effects

@@ -21,6 +21,7 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
 
 import assembler  # noqa: E402
 from assembler.mjlab import entity_cfg  # noqa: E402
+from assembler.warp.plan_effects import compiler_dampratio_rule  # noqa: E402
 from assembler.warp.reset_term import ResampleAtReset  # noqa: E402
 from assembler.worlds.variants.plan import Draw, Grid, VariantPlan  # noqa: E402
 
@@ -108,3 +109,18 @@ def test_the_reset_term_writes_each_reset_worlds_draws_into_mjlabs_model_as_the_
 def _draws(seed: int, world: int) -> list[float]:
     rng = np.random.default_rng([seed, world])
     return [draw.sample(rng) for draw in PLAN.draws]
+
+
+def test_a_plan_varying_nothing_a_dampratio_reads_keeps_its_laws_on_any_mujoco() -> None:
+    plan = VariantPlan(
+        "Sparrow7",
+        fixed=("geoms=[{match: 'link7_col*', friction: [1, 0.005, 0.0001]}]",),
+        grids=(Grid.parse("joint_defaults.damping=0.1,2.0"),),
+        draws=(Draw.parse("geoms[0].friction[0]=0.3:1.2", "uniform"),),
+        random=2,
+    )
+    term = ResampleAtReset(plan)  # MuJoCo 3.11 (mjlab's) resolves dampratios by another rule than 4
+    assert term.effects is not None
+    if compiler_dampratio_rule() == "diagonal":  # left at their compiled values: nothing they read varies
+        assert term.effects.dampratio == {}
+    assert {"dof_damping", "geom_friction"} <= set(term.model_fields)
