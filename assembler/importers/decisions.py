@@ -10,7 +10,7 @@ import mujoco
 import numpy as np
 
 from assembler.importers.entries import Entry
-from assembler.importers.physics import home_pose, posed_data, scalar_joints, torque_limit
+from assembler.importers.physics import home_pose, joint_id, posed_data, scalar_joints, torque_limit
 from assembler.importers.reading import ModelFile
 from assembler.importers.tree import FINGER_BODY_WORDS, Tree
 from assembler.models.motor_table import MOTORS
@@ -69,35 +69,60 @@ DAMPING_RATIO = 1.0
 """The servos' damping as a ratio of critical damping at the home pose (MuJoCo's ``dampratio``)."""
 
 
-def _servo_gain(limit: float) -> float:
-    """The stiffness of a servo that reaches ``limit`` at :data:`SATURATION`, to three digits."""
-    return float(f"{limit / SATURATION:.3g}")
+STABLE = 0.5
+"""The largest natural frequency of a servo ``new`` adds, times the model's timestep: a stiffer servo on
+a light joint (the SO-101's) would make MuJoCo's explicit step blow up."""
+
+
+def _servo_gain(limit: float, inertia: float, timestep: float) -> tuple[float, bool]:
+    """The stiffness of a servo that reaches ``limit`` at :data:`SATURATION`, at most what keeps its
+    natural frequency (with the joint's inertia at home) below :data:`STABLE` / timestep; to three
+    digits, and whether it was capped."""
+    gain, cap = limit / SATURATION, inertia * (STABLE / timestep) ** 2
+    return float(f"{min(gain, cap):.3g}"), cap < gain
 
 
 def actuator_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
-    """Position servos for a file without actuators, so the robot holds the pose it is given: each
+    """Position servos for the joints no actuator of the file drives (every joint of a URDF; metaworld's
+    Sawyer drives only its claws, its arm follows a mocap weld), so the robot holds the pose it is given: each
     joint's stiffness reaches the joint's effort limit (its force range) at :data:`SATURATION`, its
     damping critical; a guessed limit (twice gravity's load) where the file gives none."""
-    driven = driven_joints(file.model, joints)
-    if file.model.nu or not driven:
+    actuated = set(_actuated_joints(file.model))
+    if len(actuated) < file.model.nu:  # tendons or sites drive some joints (the Shadow hand's couplings)
+        return None
+    driven = [name for name in driven_joints(file.model, joints) if name not in actuated]
+    if not driven:
         return None
     data = posed_data(file.model)
     limits = {name: torque_limit(file.model, data, name) for name in driven}
     declared: list[dict[str, Any]] = []
+    capped = []
     for name, limit in limits.items():
-        servo: dict[str, Any] = {"match": name, "kp": _servo_gain(limit.value), "dampratio": DAMPING_RATIO}
+        dof = int(file.model.jnt_dofadr[joint_id(file.model, name)])
+        gain, cut = _servo_gain(limit.value, float(file.model.dof_M0[dof]), float(file.model.opt.timestep))
+        capped += [name] if cut else []
+        servo: dict[str, Any] = {"match": name, "kp": gain, "dampratio": DAMPING_RATIO}
         if not limit.from_file:
             servo["forcerange"] = [-limit.value, limit.value]
         declared.append(servo)
-    entry = Entry("actuators", declared).guess(
-        f"the {file.format.upper()} has no actuators: a position servo per joint, so the robot holds the "
-        f"pose it is given; kp reaches the joint's effort limit (its force range) {SATURATION} rad from the "
-        f"target, damping critical (dampratio {DAMPING_RATIO:g})"
+    which = (
+        f"the {file.format.upper()} has no actuators"
+        if not actuated
+        else f"no actuator drives {_short(driven)}"
     )
-    if len(driven) < len(joints):
+    entry = Entry("actuators", declared).guess(
+        f"{which}: a position servo per joint, so the robot holds the pose it is given; kp reaches the "
+        f"joint's effort limit (its force range) {SATURATION} rad from the target, damping critical "
+        f"(dampratio {DAMPING_RATIO:g})"
+    )
+    if capped:
         entry.guess(
-            f"{_short([n for n in joints if n not in driven])} follow another joint (URDF <mimic>): no servo"
+            f"{_short(capped)}: kp lowered so that the servo stays stable at the model's timestep "
+            f"(natural frequency {STABLE} / timestep with the joint's inertia at home)"
         )
+    followers = [n for n in joints if n not in driven_joints(file.model, joints)]
+    if followers:
+        entry.guess(f"{_short(followers)} follow another joint (URDF <mimic>): no servo")
     guessed = [name for name, limit in limits.items() if not limit.from_file]
     if guessed:
         entry.decide(
@@ -126,6 +151,24 @@ def _shipped_motors(efforts: dict[str, float]) -> str:
     return "; ".join(f"{_short(joints, 4)}: {' or '.join(names)}" for names, joints in groups.items())
 
 
+OVERLAP = 0.002
+"""m: the deepest overlap of two of the robot's geoms at its home pose said as a problem."""
+
+
+def _overlap(model: mujoco.MjModel, joints: tuple[str, ...], pose: list[float]) -> str:
+    """The deepest overlap of two geoms at ``pose`` beyond :data:`OVERLAP`, as words; "" if none."""
+    data = mujoco.MjData(model)
+    for name, value in zip(joints, pose, strict=True):
+        data.qpos[model.jnt_qposadr[joint_id(model, name)]] = value
+    mujoco.mj_forward(model, data)
+    contacts = [data.contact[i] for i in range(data.ncon) if data.contact[i].dist < -OVERLAP]
+    if not contacts:
+        return ""
+    deepest = min(contacts, key=lambda contact: contact.dist)
+    bodies = [model.body(int(model.geom_bodyid[g])).name for g in (deepest.geom1, deepest.geom2)]
+    return f"the bodies {bodies[0]} and {bodies[1]} overlap by {-deepest.dist * 1000:.0f} mm"
+
+
 def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     """The home pose: MuJoCo's qpos0, moved inside any joint range it lies outside."""
     if not joints or not scalar_joints(file.model, joints):
@@ -134,6 +177,12 @@ def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     entry = Entry("init_qpos", pose).guess("the file's zero pose (MuJoCo's qpos0), one value per joint")
     if moved:
         entry.guess(f"{_short(moved)} moved to the middle of their range: qpos0 lies outside it")
+    overlap = _overlap(file.model, joints, pose)
+    if overlap:
+        entry.decide(
+            f"at this pose {overlap}: MuJoCo pushes them apart from the first step; set a pose where "
+            "they clear"
+        )
     return entry.decide("set init_qpos to the pose the robot should start each episode in")
 
 
@@ -287,9 +336,10 @@ def root_pose_entry(file: ModelFile, root: str) -> Entry | None:
 def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     """The fields of a hand's spec after its kind, name and file."""
     entries = [
+        *balance_entry(file),
         Entry("eef_body", tree.eef_body).guess(
             "the root body; set the body at the grip point if there is one (robosuite adds an eef body here)"
-        )
+        ),
     ]
     pose_of_root = root_pose_entry(file, tree.eef_body)
     entries += [pose_of_root] if pose_of_root else []
@@ -308,13 +358,11 @@ def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     entries += [pose] if pose else []
     actuators = actuator_entry(file, tree.joints)
     entries += [actuators] if actuators else []
-    names = (
-        driven_joints(file.model, tree.joints)
-        if actuators
-        else [
-            mujoco.mj_id2name(file.model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in range(file.model.nu)
-        ]
-    )
+    names = [
+        mujoco.mj_id2name(file.model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or "" for a in range(file.model.nu)
+    ]
+    if actuators is not None:  # the servos new adds, named after their joints
+        names += [str(servo["match"]) for servo in actuators.value]
     if names:
         entries.append(
             Entry(

@@ -110,11 +110,14 @@ def _package(urdf: Path, name: str, folder: Path, spec_dir: Path) -> BesidePacka
 
 
 def packages_beside(urdf: Path, spec_dir: Path) -> list[BesidePackage]:
-    """The packages the URDF names that no package root holds, each found beside the URDF."""
+    """The packages the URDF names that no package root holds (with the files named: pybullet's Panda
+    names ``package://meshes``, which xArm's package folder on ROS_PACKAGE_PATH also holds), each found
+    beside the URDF."""
     found = []
     for name, inner in _named(urdf).items():
-        if package_folders(name, urdf):
-            continue
+        roots = package_folders(name, urdf)
+        if any((folder / path).is_file() for folder in roots for path in inner):
+            continue  # a package root holds it (one holding none of its files is another package)
         folder = _beside(urdf, name, inner)
         if folder is not None:
             found.append(_package(urdf, name, folder, spec_dir))

@@ -19,6 +19,8 @@ from typing import Any
 
 import mujoco
 
+from assembler.urdf.packages import package_folders
+
 
 def _packages(text: str) -> str:
     for folder in filter(None, os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep)):
@@ -26,7 +28,17 @@ def _packages(text: str) -> str:
             root = Path(folder) if Path(folder).name == package else Path(folder) / package
             if root.is_dir():  # an entry is the package itself or holds it (as ROS reads it)
                 text = text.replace(f"package://{package}/", f"{root}/")
+    for package in set(re.findall(r"package://([^/]+)/", text)):  # a share/ tree (example-robot-data)
+        found = package_folders(package)
+        if found:
+            text = text.replace(f"package://{package}/", f"{found[0]}/")
     return text
+
+
+def reads_collada(path: Path) -> bool:
+    """Whether the URDF names COLLADA meshes, which MuJoCo alone cannot read (the assembler converts
+    them to OBJ, docs/urdf.md): MuJoCo's own load has nothing to compare with."""
+    return bool(re.search(r"\.dae[\"']", path.read_text(), re.IGNORECASE))
 
 
 def _subtree_names(body: Any) -> set[str]:
@@ -69,4 +81,18 @@ def direct_load(path: Path, urdf: bool, spec: Any, root: str | None = None) -> m
         f'meshdir="{path.parent}" balanceinertia="{balance}"/></mujoco>'
     )
     text = re.sub(r"(<robot[^>]*>)", lambda match: match.group(1) + compiler, path.read_text(), count=1)
-    return mujoco.MjSpec.from_string(_packages(text)).compile()
+    loaded = mujoco.MjSpec.from_string(_packages(_sized_visuals(text)))
+    if getattr(spec, "add_free_joint", False):  # a URDF declares no floating base; the spec adds one
+        loaded.worldbody.bodies[0].add_freejoint()
+    return loaded.compile()
+
+
+def _sized_visuals(text: str) -> str:
+    """The URDF without the visuals of a size MuJoCo cannot compile (which its import, discarding every
+    visual by default, never compiles): the read leaves them out and says so."""
+    return re.sub(
+        r"<visual>(?:(?!</visual>).)*?<(?:sphere|cylinder|capsule) radius=\"0(?:\.0*)?\"(?:(?!</visual>).)*?</visual>",
+        "",
+        text,
+        flags=re.S,
+    )

@@ -21,7 +21,7 @@ from assembler.tools.render.picture import render_views
 from assembler.tools.render.stage import build_stage
 from tests.corpus.cases import CASES, Case
 from tests.corpus.conftest import Corpus
-from tests.corpus.direct_load import direct_load
+from tests.corpus.direct_load import direct_load, reads_collada
 from tests.tools.test_render import robot_mask
 
 pytestmark = pytest.mark.corpus
@@ -40,14 +40,14 @@ CONVENTIONS = {
 """Where our build differs from MuJoCo's direct load on purpose (docs/add-your-robot.md lists them)."""
 
 
-def _cases(stage: str, arms_only: bool = False) -> list[Any]:
+def _cases(stage: str, arms_only: bool = False, robots_only: bool = False) -> list[Any]:
     params = []
     for case in CASES:
-        if arms_only and not case.arm:
+        if (arms_only and not case.arm) or (robots_only and not case.robot) or case.refused:
             continue
         defect = case.blocked(stage)
         error: type[Exception] = ValueError if stage in case.tracebacks else AssemblerError
-        if stage in case.defects and stage == "jaw":  # the build works; the check finds the defect
+        if stage in case.defects and stage in ("jaw", "hold"):  # the build works; the check finds the defect
             error = AssertionError
         marks = [pytest.mark.xfail(reason=defect, raises=error, strict=True)] if defect else []
         marks += [pytest.mark.filterwarnings(f"ignore:{message}") for message in case.warnings]
@@ -56,13 +56,21 @@ def _cases(stage: str, arms_only: bool = False) -> list[Any]:
 
 
 def _part(case: Case, name: str) -> Any:
-    if case.arm:
+    if case.robot:
         return assembler.create_robot(name, idn=0)
     return assembler.create_gripper(name, idn=0)
 
 
 def _compiled(part: Any) -> mujoco.MjModel:
     return part.get_model() if isinstance(part, RobotModel) else part.compile_alone()
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, id=c.id) for c in CASES if c.refused])
+def test_new_refuses_a_file_mujoco_refuses_in_one_line_naming_its_fault(case: Case, corpus: Corpus) -> None:
+    with pytest.raises(AssemblerError) as refused:
+        corpus.spec(case)
+    (line,) = str(refused.value).splitlines()
+    assert case.refused in line and str(corpus.model_file(case).name) in line
 
 
 @pytest.mark.parametrize("case", _cases("build"))
@@ -73,7 +81,26 @@ def test_new_writes_a_spec_that_validates_and_builds_as_written(case: Case, corp
     assert part.spec.source_file == f"package://{case.package}/{case.file}"  # the installed file, not a copy
 
 
-JAWS = ("so101", "so101_urdf", "fetch")
+@pytest.mark.parametrize("case", [p for p in _cases("hold", arms_only=True)])
+def test_a_fixed_base_arm_holds_its_home_pose_for_a_second_with_ctrl_at_home(
+    case: Case, corpus: Corpus
+) -> None:
+    robot = assembler.create_robot(corpus.name(case), idn=0)
+    if not robot.spec.actuators:
+        pytest.skip("the file's own actuators drive the arm (new adds servos only to a file without any)")
+    model = robot.get_model()
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    home = data.qpos.copy()
+    data.ctrl[:] = home[model.jnt_qposadr[model.actuator_trnid[:, 0]]]
+    worst = 0.0
+    for _ in range(round(1.0 / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+        worst = max(worst, float(np.max(np.abs(data.qpos - home))))
+    assert worst < 0.1
+
+
+JAWS = ("so101", "so101_urdf", "fetch", "metaworld_sawyer", "aloha_viperx", "panda_erd", "panda_pybullet")
 """Arms whose file holds their own jaw."""
 
 
@@ -116,6 +143,8 @@ def test_the_build_equals_mujocos_direct_load_of_the_vendors_file(case: Case, co
     ours, prefix = _compiled(part), part.naming_prefix
     scene_cut = any(fix.delete for fix in part.spec.mjcf_fixes)  # the robot of a task scene alone
     root = part.root_body.removeprefix(prefix) if scene_cut else None
+    if part.spec.source_field == "urdf" and reads_collada(corpus.model_file(case)):
+        pytest.skip("MuJoCo alone reads no COLLADA mesh: there is no direct load to compare with")
     theirs = direct_load(corpus.model_file(case), part.spec.source_field == "urdf", part.spec, root)
     root_name = theirs.body(1).name
     ours_pose, theirs_pose = _pose(ours, ours.body(prefix + root_name).id), _pose(theirs, 1)
@@ -137,7 +166,11 @@ def test_the_build_equals_mujocos_direct_load_of_the_vendors_file(case: Case, co
             _geoms(ours, mine, colours), _geoms(theirs, body, colours), atol=1e-5, err_msg=name
         )
     for joint in range(theirs.njnt):
-        name, mine = theirs.joint(joint).name, ours.joint(prefix + theirs.joint(joint).name).id
+        name = theirs.joint(joint).name
+        if not name:  # the free joint a URDF spec adds (add_free_joint), unnamed in both
+            assert sum(ours.jnt_type == mujoco.mjtJoint.mjJNT_FREE) == 1
+            continue
+        mine = ours.joint(prefix + name).id
         assert ours.jnt_type[mine] == theirs.jnt_type[joint], name
         assert bool(ours.jnt_limited[mine]) == bool(theirs.jnt_limited[joint]), name
         np.testing.assert_allclose(ours.jnt_range[mine], theirs.jnt_range[joint], atol=1e-9, err_msg=name)
@@ -150,7 +183,7 @@ def test_the_build_equals_mujocos_direct_load_of_the_vendors_file(case: Case, co
             )
 
 
-@pytest.mark.parametrize("case", _cases("render", arms_only=True))
+@pytest.mark.parametrize("case", _cases("render", robots_only=True))
 def test_the_robot_renders_visibly(case: Case, corpus: Corpus) -> None:
     stage = build_stage(assembler.assemble(corpus.name(case)), 160, 120)
     (image,) = render_views(stage, ["iso"], 160, 120)
