@@ -202,6 +202,16 @@ CASES: tuple[Case, ...] = (
         share=True,
         refused="MuJoCo refuses it: Error: error 'inertia must have positive eigenvalues'",
     ),
+    Case("bolt", ERD, ERD, "robots/bolt_description/robots/bolt.urdf", kind="legged", share=True),
+    Case("a1", ERD, ERD, "robots/a1_description/urdf/a1.urdf", kind="legged", share=True, name="A1Corpus"),
+    Case(
+        "b1",
+        ERD,
+        ERD,
+        "robots/b1_description/urdf/b1.urdf",
+        share=True,
+        refused="MuJoCo refuses it: Error: error 'inertia must have positive eigenvalues' in fullinertia Element name 'base'",
+    ),
     # dm-control's suite
     Case("dm_quadruped", "dm_control", "dm-control", "suite/quadruped.xml", kind="legged"),
     Case("cmu_humanoid", "dm_control", "dm-control", "suite/humanoid_CMU.xml", kind="humanoid"),
