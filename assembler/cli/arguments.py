@@ -317,6 +317,12 @@ def _new(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--force", action="store_true", help="replace SPEC if it exists")
     parser.add_argument(
+        "--pack",
+        metavar="DIR",
+        help="write the spec into a spec pack at DIR (a pyproject.toml with the entry point, the specs, "
+        "the vendor's files copied with their licence) that others pip install",
+    )
+    parser.add_argument(
         "--strict",
         action="store_true",
         help="refuse a file read only with a repair or with values left out (inertias MuJoCo refuses, "

@@ -126,3 +126,44 @@ def test_two_packs_of_one_name_are_an_error_naming_both_and_a_broken_entry_point
         "warning: spec pack beta_robots (beta-robots 1.0): 'beta_robots:nowhere' names no folder of an "
         "importable package; its robots are not available (reinstall it, or fix its entry point)"
     )
+
+
+def test_new_writes_a_pack_that_installs_and_builds_its_robot_by_name(tmp_path: Path) -> None:
+    vendor = tmp_path / "vendor"
+    vendor.mkdir()
+    shutil.copy(ROOT / "assets" / "sparrow7" / "sparrow7.xml", vendor / "arm.xml")
+    (vendor / "LICENSE").write_text("The vendor's licence.\n")
+    before = {path.name: path.read_bytes() for path in vendor.iterdir()}
+    wrote = _assembler(dict(os.environ), tmp_path, "new", "vendor/arm.xml", "--pack", "lab-robots")
+    assert wrote.returncode == 0, wrote.stderr
+    assert wrote.stdout.splitlines()[0].startswith(
+        "wrote lab-robots/lab_robots/specs/sparrow7_arm.yaml: robot Sparrow7Arm, and 2 vendor files under "
+        "lab-robots/lab_robots/assets and lab-robots/pyproject.toml (validated and compiled)"
+    )
+    spec = tmp_path / "lab-robots" / "lab_robots" / "specs" / "sparrow7_arm.yaml"
+    assert {
+        path.name: path.read_bytes() for path in vendor.iterdir()
+    } == before  # the vendor's files untouched
+    copied = tmp_path / "lab-robots" / "lab_robots" / "assets" / "arm"
+    assert (copied / "arm.xml").read_bytes() == before["arm.xml"]
+    assert (copied / "LICENSE").read_bytes() == before["LICENSE"]
+    assert "mjcf: package://lab_robots/assets/arm/arm.xml" in spec.read_text()
+    built = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "build",
+            "--wheel",
+            "--outdir",
+            str(tmp_path / "dist"),
+            str(tmp_path / "lab-robots"),
+        ],
+        capture_output=True,
+        text=True,
+    )
+    assert built.returncode == 0, built.stderr
+    env = _install(list((tmp_path / "dist").glob("lab_robots-*.whl")), tmp_path / "site")
+    work = tmp_path / "elsewhere"
+    work.mkdir()
+    done = _assembler(env, work, "build", "Sparrow7Arm", "-o", "robot.xml")
+    assert (done.returncode, done.stderr) == (0, "wrote robot.xml\n")
