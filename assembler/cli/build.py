@@ -10,11 +10,26 @@ from pathlib import Path
 
 from assembler.answers.request import record_answer
 from assembler.cli.cached_build import build_flags, request_of, write_xml
-from assembler.cli.common import assembled, idle_override_warnings, use_cache
+from assembler.cli.common import assembled, idle_override_warnings, robot_name, use_cache
 from assembler.gpu.put_model_check import check_with_mujoco_warp
+from assembler.registry.instances import create_gripper
+from assembler.registry.lookup import REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+
+
+def _gripper_alone(args: argparse.Namespace) -> bool:
+    """Write the MJCF of a gripper spec built alone (``assembler build hand.yaml``), if ``args.robot``
+    names one and no robot; return whether it did."""
+    name = robot_name(args.robot)
+    if name in REGISTERED_ROBOTS or name not in REGISTERED_GRIPPERS:
+        return False
+    _, spec = create_gripper(name, idn=args.idn).compile_alone_spec()
+    write_xml(args, spec.to_xml(), name)
+    return True
 
 
 def run(args: argparse.Namespace) -> int:
+    if _gripper_alone(args):
+        return 0
     robot = assembled(args)
     xml = robot.get_xml(cache=use_cache(args))  # compiled first: a robot that does not compile writes nothing
     notes = idle_override_warnings(args)  # every --set checked before anything is written

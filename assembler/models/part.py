@@ -236,12 +236,17 @@ class PartModel(metaclass=RegisteringMeta):
 
     def compile_alone(self) -> mujoco.MjModel:
         """Compile this part on its own (as ``assembler validate --compile`` does for bases and grippers)."""
+        return self.compile_alone_spec()[0]
+
+    def compile_alone_spec(self) -> tuple[mujoco.MjModel, mujoco.MjSpec]:
+        """:meth:`compile_alone`, with the spec it compiled (its MJCF is ``spec.to_xml()``: ``assembler
+        build`` of a gripper or base spec)."""
         assembly = compose.new_assembly(self.source.globals_xml)
         compose.attach_at_world(assembly, self.part_mjspec(), self.naming_prefix)
         self.complete_alone(assembly)
         what = f"building {self.family} '{type(self).__name__}' alone"
         census.require_at_least(census.of_spec(assembly), census.of_spec(self.prepared_mjspec), what)
-        return compile_home(assembly, self.home_qpos(), self.describe())
+        return compile_home(assembly, self.home_qpos(), self.describe()), assembly
 
     def complete_alone(self, assembly: mujoco.MjSpec) -> None:
         """What a part needs around it to compile on its own; nothing for most parts."""

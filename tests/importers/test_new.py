@@ -473,3 +473,17 @@ def test_an_inertia_mujoco_refuses_even_balanced_is_refused_with_its_reason(
     model = write("robots/wobbly.urdf", SINGULAR)
     assert _new(model, model.with_name("wobbly.yaml")) == 1
     assert "must have positive eigenvalues' in fullinertia Element name 'arm'" in capsys.readouterr().err
+
+
+def test_a_gripper_spec_new_wrote_builds_alone(
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
+    # docs/add-your-robot.md: assembler build hand.yaml, as for a robot spec
+    hand = TWO_LINK_MJCF.replace('model="twolink"', 'model="claw_hand"')
+    model = write("robots/claw_hand.xml", hand)
+    spec = model.with_name("claw_hand.yaml")
+    assert _new(model, spec) == 0 and "kind: gripper" in spec.read_text()
+    out = spec.with_name("claw_hand_built.xml")
+    assert main(["build", str(spec), "-o", str(out)]) == 0
+    built = mujoco.MjModel.from_xml_path(str(out))
+    assert built.njnt == 2 and built.nu == 2
