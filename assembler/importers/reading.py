@@ -22,6 +22,7 @@ from assembler.files.regular import not_regular
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
+from assembler.urdf.document import NOT_FINITE
 from assembler.urdf.packages import share_reference
 from assembler.urdf.postprocess import MUJOCO_IGNORES
 
@@ -110,10 +111,17 @@ def check_model_path(path: Path) -> Path:
     return resolved
 
 
+STRICT = "--strict refuses a file read with a value changed, left out or not finite"
+
+
 def repairs(source: MjcfSource) -> list[str]:
     """The read's notes that say a value of the file was changed or left out (a visual of no size, a
     ``<mimic>`` MuJoCo ignores, a balanced inertia), which ``new --strict`` refuses."""
-    return [note for note in source.notes if MUJOCO_IGNORES in note or note.startswith("balance_inertia:")]
+    return [
+        note
+        for note in source.notes
+        if MUJOCO_IGNORES in note or NOT_FINITE in note or note.startswith("balance_inertia:")
+    ]
 
 
 def read_model_file(path: Path, fixes: Sequence[MjcfFix] = (), strict: bool = False) -> ModelFile:
@@ -130,7 +138,5 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = (), strict: bool = Fa
         source, model, balanced = _read(path, reference, fmt, fixes, strict)
     changed = repairs(source) if strict else []
     if changed:
-        raise MjcfError(
-            [Problem(f"{line}; --strict refuses a file read with a value left out") for line in changed]
-        )
+        raise MjcfError([Problem(f"{line}; {STRICT}") for line in changed])
     return ModelFile(path, fmt, reference, source, model, balanced)

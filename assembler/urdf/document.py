@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Collection
 from dataclasses import dataclass, field
@@ -76,6 +77,8 @@ class UrdfDocument:
     efforts: dict[str, float] = field(default_factory=dict)
     ignored: list[tuple[str, int]] = field(default_factory=list)
     """``(tag, line)`` of each child of ``<mujoco>`` that neither MuJoCo's import nor we read."""
+    non_finite: list[str] = field(default_factory=list)
+    """One line per attribute holding a number that is not finite (``nan``, ``inf``), which MuJoCo keeps."""
     discarded: list[str] = field(default_factory=list)
     """One line per ``<visual>`` left out because MuJoCo could not compile it (a size that is not
     positive), which MuJoCo's own import never compiles (it discards visuals)."""
@@ -104,6 +107,32 @@ def _bad_size(visual: ET.Element) -> str | None:
             if any(not math.isfinite(v) or v <= 0 for v in values):
                 return f'<{shape.tag} {attribute}="{text}">'
     return None
+
+
+NOT_FINITE = "not a finite number"
+"""The words of every line saying that a URDF's number is NaN or infinite."""
+
+NON_FINITE_VALUE = re.compile(r"(?<![A-Za-z_])[-+]?(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
+
+
+def _non_finite(data: bytes, shown: str) -> list[str]:
+    """A line per attribute of the URDF whose value holds ``nan`` or ``inf``: MuJoCo's import keeps them
+    (a NaN position makes every step NaN, an infinite size a geom without bounds) and warns only that
+    the file holds a NaN somewhere."""
+    found = []
+    text = data.decode("utf-8", errors="replace")
+    for number, line in enumerate(text.splitlines(), start=1):
+        for tag, body in re.findall(r"<(\w+)([^<>]*)>", line):
+            for attribute, value in re.findall(r"([\w:]+)\s*=\s*[\"']([^\"']*)[\"']", body):
+                if attribute not in ("name", "filename", "link", "joint", "type") and NON_FINITE_VALUE.search(
+                    value
+                ):
+                    found.append(
+                        f'{shown}:{number}: <{tag} {attribute}="{value}"> holds a value that is {NOT_FINITE}: '
+                        "MuJoCo keeps it as written (a NaN position makes every step NaN, an infinite size a geom without "
+                        "bounds); correct the URDF"
+                    )
+    return found
 
 
 def _discard_bad_visuals(root: ET.Element, lines: list[int], shown: str, document: UrdfDocument) -> None:
@@ -278,6 +307,7 @@ def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
         raise MjcfError(reader.problems)
     _joint_facts(root, reader.lines["joint"], document)
     _discard_bad_visuals(root, reader.lines["link/visual"], shown, document)
+    document.non_finite = _non_finite(data, shown)
     document.mujoco_element = extension
     document.ignored = [(tag, line) for tag, line in found.extension if tag not in EXTENSION_SECTIONS]
     document.text = ET.tostring(root, encoding="unicode")

@@ -129,6 +129,7 @@ def _notes(document: UrdfDocument, balanced: list[str], ignored: dict[Mimic, str
     ]
     notes += ignored.values()
     notes += document.discarded
+    notes += document.non_finite
     made = [file for file in document.mesh_files if file.parent == converted_dir()]
     converted = [file for file in made if file not in document.renamed]
     if converted:
@@ -185,7 +186,7 @@ def _load(
     # said once per version of the file, as MuJoCo's own warnings are
     # balanced inertias are the spec's own choice (balance_inertia: true), kept in the notes (and in the
     # comment new writes above that line), not said at every read
-    for line in [*_ignored(document), *ignored.values(), *document.discarded]:
+    for line in [*_ignored(document), *ignored.values(), *document.discarded, *document.non_finite]:
         warnings.warn(line, AssemblerWarning, stacklevel=2)
     files = (before, *(_stat(file) for file in dict.fromkeys(document.mesh_files)))
     return MjcfSource(

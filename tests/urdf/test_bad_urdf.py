@@ -313,3 +313,19 @@ def test_a_visual_of_a_size_mujoco_cannot_compile_is_left_out_as_mujocos_import_
     ]
     model = mujoco.MjModel.from_xml_path("out.xml")
     assert model.ngeom == 0
+
+
+@pytest.mark.filterwarnings("default::assembler.errors.AssemblerWarning")  # shown as the CLI shows it
+def test_a_number_that_is_not_finite_is_said_at_its_line_as_mujoco_keeps_it(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # MuJoCo warns only that the file holds a NaN somewhere, and keeps it: a NaN position, an infinite size
+    visual = '<visual><origin xyz="nan 0 0"/><geometry><box size="0.1 inf 0.1"/></geometry></visual>'
+    monkeypatch.chdir(_lab(tmp_path, urdf(visual=visual), {}, ""))
+    main(["validate", "--compile", "specs/arm.yaml"])
+    err = capsys.readouterr().err.splitlines()
+    for value in ('<origin xyz="nan 0 0">', '<box size="0.1 inf 0.1">'):
+        assert (
+            f"warning: specs/arm.urdf:3: {value} holds a value that is not a finite number: MuJoCo keeps it as written "
+            "(a NaN position makes every step NaN, an infinite size a geom without bounds); correct the URDF"
+        ) in err
