@@ -112,6 +112,11 @@ def _bad_size(visual: ET.Element) -> str | None:
 NOT_FINITE = "not a finite number"
 """The words of every line saying that a URDF's number is NaN or infinite."""
 
+KEPT = (
+    "MuJoCo keeps it as written (a NaN position makes every step NaN, an infinite size a geom without "
+    "bounds); correct the URDF"
+)
+
 NON_FINITE_VALUE = re.compile(r"(?<![A-Za-z_])[-+]?(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
 
 
@@ -124,14 +129,10 @@ def _non_finite(data: bytes, shown: str) -> list[str]:
     for number, line in enumerate(text.splitlines(), start=1):
         for tag, body in re.findall(r"<(\w+)([^<>]*)>", line):
             for attribute, value in re.findall(r"([\w:]+)\s*=\s*[\"']([^\"']*)[\"']", body):
-                if attribute not in ("name", "filename", "link", "joint", "type") and NON_FINITE_VALUE.search(
-                    value
-                ):
-                    found.append(
-                        f'{shown}:{number}: <{tag} {attribute}="{value}"> holds a value that is {NOT_FINITE}: '
-                        "MuJoCo keeps it as written (a NaN position makes every step NaN, an infinite size a geom without "
-                        "bounds); correct the URDF"
-                    )
+                named = attribute in ("name", "filename", "link", "joint", "type")
+                if not named and NON_FINITE_VALUE.search(value):
+                    written = f'<{tag} {attribute}="{value}">'
+                    found.append(f"{shown}:{number}: {written} holds a value that is {NOT_FINITE}: {KEPT}")
     return found
 
 
