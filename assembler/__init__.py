@@ -34,6 +34,7 @@ if TYPE_CHECKING:  # for type checkers and editors: API below, as imports (a tes
     from assembler.models import HumanoidModel as HumanoidModel
     from assembler.models import HumanoidUpperBodyModel as HumanoidUpperBodyModel
     from assembler.models import LeggedManipulatorModel as LeggedManipulatorModel
+    from assembler.models import LeggedModel as LeggedModel
     from assembler.models import ManipulatorModel as ManipulatorModel
     from assembler.models import RobotBaseModel as RobotBaseModel
     from assembler.models import RobotModel as RobotModel
@@ -118,6 +119,7 @@ API: dict[str, tuple[str, ...]] = {
         "RobotModel",
         "ManipulatorModel",
         "LeggedManipulatorModel",
+        "LeggedModel",
         "HumanoidModel",
         "HumanoidUpperBodyModel",
         "RobotBaseModel",
