@@ -333,6 +333,51 @@ def root_pose_entry(file: ModelFile, root: str) -> Entry | None:
     )
 
 
+AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+
+TO_Z: dict[str, list[float]] = {
+    "+x": [0.707107, 0.0, -0.707107, 0.0],
+    "-x": [0.707107, 0.0, 0.707107, 0.0],
+    "+y": [0.707107, 0.707107, 0.0, 0.0],
+    "-y": [0.707107, -0.707107, 0.0, 0.0],
+    "-z": [0.0, 1.0, 0.0, 0.0],
+}
+"""The rotation (w, x, y, z) that turns each axis of the hand's root into +z, where robosuite's grippers
+point."""
+
+
+def _pointing(model: mujoco.MjModel, root: str) -> str:
+    """The axis of the root body's frame the hand's fingertips lie along (the leaf bodies' mean)."""
+    data = posed_data(model)
+    top = model.body(root).id
+    parents = set(int(p) for p in model.body_parentid)
+    leaves = []
+    for body in range(top + 1, model.nbody):
+        walk = body
+        while walk > top:
+            walk = int(model.body_parentid[walk])
+        if walk == top and body not in parents:
+            leaves.append(body)
+    if not leaves:
+        return "+z"
+    rotation = data.xmat[top].reshape(3, 3)
+    reach = rotation.T @ (data.xpos[leaves].mean(axis=0) - data.xpos[top])
+    axis = int(np.argmax(np.abs(reach)))
+    return AXES[2 * axis + (0 if reach[axis] >= 0 else 1)]
+
+
+def mount_note(file: ModelFile, root: str) -> str | None:
+    """What to write on the arm when the hand's fingers do not point along +z of its root."""
+    axis = _pointing(file.model, root)
+    if axis == "+z":
+        return None
+    return (
+        f"the fingers reach along {axis} of the root body {root}, robosuite's grippers along +z of the "
+        f"hand: on the arm's spec, gripper_mount: {{right: {{quat: {TO_Z[axis]}}}}} turns it to point out "
+        "of the flange (then check the closing direction in assembler render)"
+    )
+
+
 def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     """The fields of a hand's spec after its kind, name and file."""
     entries = [
@@ -341,6 +386,9 @@ def gripper_entries(file: ModelFile, tree: Tree) -> list[Entry]:
             "the root body; set the body at the grip point if there is one (robosuite adds an eef body here)"
         ),
     ]
+    mount = mount_note(file, tree.eef_body)
+    if mount:
+        entries[-1].decide(mount)
     pose_of_root = root_pose_entry(file, tree.eef_body)
     entries += [pose_of_root] if pose_of_root else []
     sites = Entry("important_sites", {"grip_site": tree.grip_site} if tree.grip_site else {})

@@ -483,6 +483,10 @@ def test_a_gripper_spec_new_wrote_builds_alone(
     model = write("robots/claw_hand.xml", hand)
     spec = model.with_name("claw_hand.yaml")
     assert _new(model, spec) == 0 and "kind: gripper" in spec.read_text()
+    # its links reach along +x of its root (pybullet's PR2 gripper too): the mount on an arm is said
+    assert "# decide: the fingers reach along +x of the root body base, robosuite's grippers along +z" in (
+        spec.read_text()
+    )
     out = spec.with_name("claw_hand_built.xml")
     assert main(["build", str(spec), "-o", str(out)]) == 0
     built = mujoco.MjModel.from_xml_path(str(out))
