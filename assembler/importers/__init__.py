@@ -21,8 +21,9 @@ from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
-from assembler.importers.decisions import gripper_entries, robot_entries
+from assembler.importers.decisions import robot_entries
 from assembler.importers.entries import Entry, spec_text
+from assembler.importers.hands import gripper_entries
 from assembler.importers.legged import legged_entries
 from assembler.importers.naming import camel_case, free_name, name_source
 from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside

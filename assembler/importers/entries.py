@@ -83,3 +83,9 @@ def spec_text(header: list[str], entries: list[Entry]) -> str:
                 lines += _wrap(note)
         lines += _value_lines(entry)
     return "\n".join(lines) + "\n"
+
+
+def short(names: tuple[str, ...] | list[str], limit: int = 6) -> str:
+    """The first ``limit`` names joined, and how many more."""
+    shown = ", ".join(names[:limit])
+    return shown + (f" and {len(names) - limit} more" if len(names) > limit else "")

@@ -4,22 +4,18 @@ floating on its own feet, no gripper guessed onto any limb."""
 
 from __future__ import annotations
 
-from assembler.importers.decisions import NO_RULES, actuator_entry, balance_entry, init_qpos_entry
-from assembler.importers.entries import Entry
+from assembler.importers.decisions import NO_RULES, balance_entry, init_qpos_entry
+from assembler.importers.entries import Entry, short
 from assembler.importers.reading import ModelFile
+from assembler.importers.servos import actuator_entry
 from assembler.importers.tree import FREE, Tree
-
-
-def _short(names: tuple[str, ...] | list[str], limit: int = 4) -> str:
-    shown = ", ".join(names[:limit])
-    return shown + (f" and {len(names) - limit} more" if len(names) > limit else "")
 
 
 def _morphology(tree: Tree) -> tuple[Entry, list[str]]:
     assert tree.limbs is not None
     arms = [side for side in ("right", "left") if tree.limbs.arms.get(side)]
     feet = (
-        f"{len(tree.limbs.feet)} feet ({_short(tree.limbs.feet)}): leaf bodies well below the root, each "
+        f"{len(tree.limbs.feet)} feet ({short(tree.limbs.feet, 4)}): leaf bodies well below the root, each "
         "at the end of a leg"
     )
     if not arms:
@@ -76,7 +72,7 @@ def legged_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     )
     if tree.fingers:
         joints.decide(
-            f"{_short(tree.fingers)} move fingers or a jaw of this file: in no group, so that no arm "
+            f"{short(tree.fingers, 4)} move fingers or a jaw of this file: in no group, so that no arm "
             "controller drives them; list them under their arm's side if it should"
         )
     entries.append(joints)
