@@ -35,8 +35,11 @@ URDF_MISSING = (
 
 
 def _own_specs(clone: Path) -> list[Path]:
-    """The clone's specs that read no other package's files (not robosuite's, not the URDF ones)."""
-    return [p for p in (clone / "specs").rglob("*.yaml") if not {"robosuite", "urdf"} & set(p.parts)]
+    """The clone's part specs that read no other package's files (not robosuite's, not the URDF ones;
+    motor specs are counted on a line of their own)."""
+    return [
+        p for p in (clone / "specs").rglob("*.yaml") if not {"robosuite", "urdf", "motors"} & set(p.parts)
+    ]
 
 
 ROBOSUITE_MISSING = (
@@ -171,7 +174,10 @@ def test_validate_specs_compile_in_the_clone_counts_what_it_compiled(
     own = _own_specs(clone)
     robosuite = list((clone / "specs" / "robosuite").rglob("*.yaml"))
     urdf = list((clone / "specs" / "urdf").rglob("*.yaml"))
+    motors = list((clone / "specs" / "motors").rglob("*.yaml"))
     lines = installed.ok(clone, *_readme_command("assembler validate specs/ --compile"))
+    motor_line = lines.pop()
+    assert motor_line.startswith(f"{len(motors)} motor spec(s) valid: ") and len(motors) >= 12
     compiled, *unchecked = lines
     assert compiled.startswith(f"{len(own)} spec(s) validated and compiled: Pedestal, QuadrupedBase, ")
     # one pair of lines per package not installed in the fresh environment: robosuite, the urdf extra

@@ -31,7 +31,7 @@ BAD_VARIABLES: dict[str, tuple[dict[str, str], list[str]]] = {
         {"ASSEMBLER_ROBOSUITE_SPECS": "bad"},
         [
             "bad/broken.yaml:3:13: morphology: Input should be 'manipulator', 'legged_manipulator', "
-            f"'humanoid' or 'humanoid_upper_body' (ASSEMBLER_ROBOSUITE_SPECS: {NOT_REGISTERED})"
+            f"'humanoid', 'humanoid_upper_body' or 'legged' (ASSEMBLER_ROBOSUITE_SPECS: {NOT_REGISTERED})"
         ],
     ),
     "a name robosuite has": (
