@@ -1,7 +1,8 @@
 """How a spec changes a part's physical shape and surfaces: body masses and sizes, geom friction.
 
 ``bodies:`` entries scale the bodies whose names match: ``size_scale`` S makes a link S times as
-large (its geoms, sites and meshes, its inertial frame and its children's offsets), with its mass
+large (its geoms and meshes, its sites' positions, its inertial frame and its children's offsets;
+a site keeps its size unless it is a touch or contact sensor's zone), with its mass
 S^3 and its inertia S^5 times the file's unless ``mass_scale`` gives the mass factor (the inertia
 then follows the mass times S^2). ``geoms:`` entries set the friction of the geoms whose names
 match. Later entries replace earlier ones' values on the same element, as ``joints:`` entries do.
@@ -32,7 +33,8 @@ class BodyScale(StrictModel):
     """Factor on the matched bodies' mass (inertia follows it); with size_scale, replaces its S^3."""
 
     size_scale: PositiveScale | None = None
-    """Factor on the matched bodies' geoms, sites, meshes, inertial frame and children's offsets;
+    """Factor on the matched bodies' geoms, meshes, inertial frame, children's offsets and site
+    positions (a site keeps its size, but a touch or contact sensor's zone scales with its geoms);
     mass follows as S^3 and inertia as S^5 unless mass_scale is given."""
 
     @model_validator(mode="after")
