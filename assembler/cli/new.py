@@ -33,18 +33,24 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {display_path(target)}: {written.kind} {written.name}", end="")
     if len(pending) < len(written.packages):
         print(f" and {display_path(target.parent / MARKER)}", end="")
-    if problems:
-        print("; it does not build as written:")
-        for line in problems:
-            print(line, file=sys.stderr)
+    if not _built_as_written(problems, " once the packages below are found" if pending else ""):
         return 1
-    found = " once the packages below are found" if pending else ""
-    print(f" (validated and compiled{found}); check each 'guess:' and settle each 'decide:' comment")
     for package in pending:
         print(f"to do: {package.todo}")
     for name, value in environment(pending).items():
         print(f"  export {name}={value}")
     return 0
+
+
+def _built_as_written(problems: list[str], found: str = "") -> bool:
+    """End the 'wrote ...' line with whether the written spec builds (its problems on stderr)."""
+    if problems:
+        print("; it does not build as written:")
+        for line in problems:
+            print(line, file=sys.stderr)
+        return False
+    print(f" (validated and compiled{found}); check each 'guess:' and settle each 'decide:' comment")
+    return True
 
 
 def _pack(args: argparse.Namespace, model_file: Path) -> int:
@@ -65,12 +71,8 @@ def _pack(args: argparse.Namespace, model_file: Path) -> int:
     )
     if written.pyproject_written:
         print(f" and {display_path(pack / 'pyproject.toml')}", end="")
-    if problems:
-        print("; it does not build as written:")
-        for line in problems:
-            print(line, file=sys.stderr)
+    if not _built_as_written(problems):
         return 1
-    print(" (validated and compiled); check each 'guess:' and settle each 'decide:' comment")
     if not written.licences:
         print(
             "decide: no licence file lies beside the vendor's files: add the licence you may share them "
