@@ -21,7 +21,8 @@ from pathlib import Path
 from assembler.errors import AssemblerError, AssemblerWarning, RegistryError
 from assembler.models import ManipulatorModel, PartModel
 from assembler.registry.catalog import register_specs, with_overrides
-from assembler.robosuite.registries import install, offered
+from assembler.robosuite.conventions import offered
+from assembler.robosuite.registries import install
 from assembler.spec.part_arguments import DEFAULT
 from assembler.worlds.experiment import build_experiment, read_experiment
 

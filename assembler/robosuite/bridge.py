@@ -26,7 +26,8 @@ from assembler.models import REGISTRIES, PartModel
 from assembler.robosuite import compat
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
-from assembler.robosuite.registries import TABLES, install, installed, offered, replaced, robosuite_has
+from assembler.robosuite.conventions import offered
+from assembler.robosuite.registries import TABLES, install, installed, replaced, robosuite_has
 from assembler.robosuite.registries import family_of as _family_of
 
 __all__ = ["register", "register_experiment", "registered", "replace_robosuite", "replaced"]

@@ -12,7 +12,7 @@ from collections.abc import Sequence
 
 import mujoco
 
-from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.models import REGISTERED_BASES, ManipulatorModel, PartModel
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import RobotSpec
 
@@ -128,3 +128,12 @@ def has_force_range(model: mujoco.MjModel, actuator: int) -> bool:
 def arm_center_site(arm: str) -> str:
     """The site robosuite's composite controller reads as an arm's origin (unprefixed)."""
     return f"{arm}_center"
+
+
+def offered(spec_class: type[PartModel]) -> bool:
+    """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
+    ``robosuite.enabled: false`` or it has no arms (``morphology: legged``: robosuite's robots are
+    manipulators). A question about the spec alone: asking it imports no robosuite."""
+    if not issubclass(spec_class, ManipulatorModel):
+        return True
+    return spec_class.spec.robosuite.enabled and bool(spec_class.spec.arms)

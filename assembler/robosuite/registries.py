@@ -58,15 +58,6 @@ def family_of(spec_class: type[PartModel]) -> str:
     raise RegistryError(f"{spec_class.__name__}: robosuite takes robots with arms, grippers and bases only")
 
 
-def offered(spec_class: type[PartModel]) -> bool:
-    """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
-    ``robosuite.enabled: false`` or it has no arms (``morphology: legged``: robosuite's robots are
-    manipulators)."""
-    if not issubclass(spec_class, ManipulatorModel):
-        return True
-    return spec_class.spec.robosuite.enabled and bool(spec_class.spec.arms)
-
-
 def registered_class(family: str, name: str) -> type | None:
     """The class robosuite's table holds for ``name`` (robosuite keeps its null gripper under None)."""
     table = TABLES[family][0]

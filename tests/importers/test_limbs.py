@@ -16,7 +16,7 @@ from assembler.cli import main
 from assembler.errors import AssemblerError
 from assembler.models import LeggedModel
 from assembler.registry.catalog import register_specs
-from assembler.robosuite.registries import offered
+from assembler.robosuite.conventions import offered
 
 BOX = '<inertial pos="0 0 0" mass="0.5" diaginertia="0.001 0.001 0.001"/><geom type="capsule" size="0.02" fromto="0 0 0 0 0 -0.2"/>'
 
