@@ -40,6 +40,16 @@ CONVENTIONS = {
 """Where our build differs from MuJoCo's direct load on purpose (docs/add-your-robot.md lists them)."""
 
 
+ON_MUJOCO_3_9 = {
+    "talos": "on MuJoCo 3.9 MuJoCo's own URDF load gives Talos' gripper base mesh geoms other sizes than "
+    "our build (up to 0.164 m apart); equal on 4.0. Not yet traced (issue 34)",
+    "panda_pybullet": "on MuJoCo 3.9 our build of pybullet's Panda has one equality (the fingers' <mimic>) "
+    "and MuJoCo's own URDF load none; equal on 4.0. Not yet traced (issue 34)",
+}
+"""Measured differences from MuJoCo's direct load on MuJoCo 3.9 only (CI runs the corpus there, its
+extra caps MuJoCo below 4): strict, so a fix shows."""
+
+
 def _cases(stage: str, arms_only: bool = False, robots_only: bool = False) -> list[Any]:
     params = []
     for case in CASES:
@@ -50,6 +60,8 @@ def _cases(stage: str, arms_only: bool = False, robots_only: bool = False) -> li
         if stage in case.defects and stage in ("jaw", "hold"):  # the build works; the check finds the defect
             error = AssertionError
         marks = [pytest.mark.xfail(reason=defect, raises=error, strict=True)] if defect else []
+        if stage == "compare" and case.id in ON_MUJOCO_3_9 and mujoco.__version__.startswith("3.9."):
+            marks.append(pytest.mark.xfail(reason=ON_MUJOCO_3_9[case.id], raises=AssertionError, strict=True))
         marks += [pytest.mark.filterwarnings(f"ignore:{message}") for message in case.warnings]
         params.append(pytest.param(case, id=case.id, marks=marks))
     return params
