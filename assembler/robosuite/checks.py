@@ -39,6 +39,7 @@ from assembler.robosuite.conventions import (
     grip_sensors,
     has_force_range,
     is_bridge_servo,
+    offered,
 )
 from assembler.robosuite.parts import undriven_joints
 from assembler.spec.fieldpath import FieldPath
@@ -191,9 +192,10 @@ def gripper_without_actions(target: LintTarget) -> Iterator[Finding]:
 
 
 def _offered(target: LintTarget) -> Iterator[ManipulatorModel]:
-    """The target's robot when robosuite is offered it (robosuite.enabled)."""
+    """The target's robot when robosuite is offered it: the bridge's own rule (robosuite.enabled, and
+    arms: a legged robot never enters robosuite), so lint and the bridge cannot disagree."""
     robot = target.parts[0] if target.parts else None
-    if isinstance(robot, ManipulatorModel) and robot.spec.robosuite.enabled:
+    if isinstance(robot, ManipulatorModel) and offered(type(robot)):
         yield robot
 
 
