@@ -12,6 +12,7 @@ from __future__ import annotations
 import importlib
 import os
 import signal
+import sys
 import threading
 from collections.abc import Sequence
 from types import FrameType
@@ -42,7 +43,7 @@ from assembler.files.cache_location import switched_off  # noqa: E402
 if _STARTING:  # an import that failed otherwise ends the process with its traceback anyway
     signal.signal(signal.SIGINT, signal.default_int_handler)
 
-__all__ = ["build_parser", "main", "parse"]
+__all__ = ["build_parser", "main", "parse", "run"]
 
 
 def working_folder() -> str:
@@ -56,8 +57,15 @@ def working_folder() -> str:
         ) from None
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    """The ``assembler`` command; returns its exit code."""
+def run() -> int:
+    """The ``assembler`` console script: :func:`main` on the process's arguments, in a process that
+    exits when it returns (a late Ctrl-C changes nothing, see :func:`~assembler.cli.endings.end_cleanly`)."""
+    return main(sys.argv[1:], process_ends=True)
+
+
+def main(argv: Sequence[str] | None = None, *, process_ends: bool = False) -> int:
+    """The ``assembler`` command; returns its exit code. ``process_ends``: called as the process's
+    entry point, which exits when this returns."""
 
     def command() -> int:
         args = parse(argv)
@@ -70,4 +78,4 @@ def main(argv: Sequence[str] | None = None) -> int:
             dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
             return int(dispatch.run_command(args))
 
-    return end_cleanly(command)
+    return end_cleanly(command, process_ends=process_ends)

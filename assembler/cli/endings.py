@@ -19,7 +19,9 @@ from __future__ import annotations
 import errno
 import io
 import os
+import signal
 import sys
+import threading
 import traceback
 import warnings
 from collections.abc import Callable
@@ -79,8 +81,12 @@ def _fill_closed_streams() -> None:
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - the process's stream, open until it ends
 
 
-def end_cleanly(command: Callable[[], int]) -> int:
-    """Run ``command`` and turn every way it can end into an exit code and at most one line per problem."""
+def end_cleanly(command: Callable[[], int], *, process_ends: bool = False) -> int:
+    """Run ``command`` and turn every way it can end into an exit code and at most one line per problem.
+
+    ``process_ends``: the process exits right after (a console script). A Ctrl-C that arrives from
+    then on is ignored: the command has ended and said so, and while the interpreter exits (joining
+    worker pools, then restoring the default handler) it would be a death by SIGINT (-2) instead."""
     _fill_closed_streams()
     try:
         with warnings.catch_warnings():
@@ -114,6 +120,9 @@ def end_cleanly(command: Callable[[], int]) -> int:
         return _opengl_problem(error)
     except Exception as error:
         return _opengl_problem(error)
+    finally:
+        if process_ends and threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, signal.SIG_IGN)  # kept as it is by the interpreter's exit
 
 
 GL_MODULES = ("gl_context", "osmesa", "egl", "glfw", "cgl")

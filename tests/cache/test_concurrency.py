@@ -23,7 +23,7 @@ from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX
 from assembler.cli import main
 from assembler.files.paths import package_root
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 
 BUILDS: list[list[str]] = [
     ["Sparrow7"],

@@ -95,7 +95,7 @@ def test_a_converted_mesh_is_a_dependency_of_the_entry(tmp_path: Path) -> None:
     assert converted.is_file()  # converted again
 
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 
 
 @pytest.mark.parametrize("kind", ["urdf", "mjcf"])

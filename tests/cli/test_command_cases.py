@@ -4,6 +4,7 @@ right exit code, in a new process as a user runs it."""
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
@@ -18,7 +19,7 @@ from assembler.cli.arguments import parse
 from assembler.spec.documents import parse_overrides
 from assembler.worlds.variants.effects import superseded
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 
 # fmt: off
 CLOSED_STDOUT = [
@@ -52,9 +53,9 @@ def _children(pid: int) -> list[int]:
 
 @pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs /proc to see the worker processes")
 def test_ctrl_c_during_variants_with_workers_prints_one_line(tmp_path: Path) -> None:
-    # A description per variant: not a patchable field, so every variant is compiled and the run is
-    # still building when it is interrupted (a patchable grid is written in milliseconds per variant).
-    values = ",".join(f"run{index}" for index in range(200))
+    # A description per variant: not a patchable field, so every variant is compiled (milliseconds
+    # each); 5,000 of them are still building when the first files are written and Ctrl-C comes.
+    values = ",".join(f"run{index}" for index in range(5000))
     command = subprocess.Popen(
         [sys.executable, "-c", CLI, "variants", "Biped", "--grid", f"description={values}"]
         + ["--no-cache", "--jobs", "2", "-o", "out"],
@@ -64,13 +65,37 @@ def test_ctrl_c_during_variants_with_workers_prints_one_line(tmp_path: Path) -> 
         start_new_session=True,  # its own process group: Ctrl-C at a terminal reaches the whole group
     )
     deadline = time.monotonic() + 120
-    while len(_children(command.pid)) < 2 and time.monotonic() < deadline:
+    written = tmp_path / "out"
+    while time.monotonic() < deadline and not (
+        len(_children(command.pid)) >= 2 and written.is_dir() and any(written.glob("Biped_*.xml"))
+    ):
         time.sleep(0.05)
-    time.sleep(2.0)  # the workers are building
     os.killpg(command.pid, signal.SIGINT)
     _, err = command.communicate(timeout=120)
     assert (command.returncode, err) == (130, "interrupted\n")
     assert not [path for path in (tmp_path / "out").glob("*") if path.name.endswith(".tmp")]
+
+
+@pytest.mark.parametrize("delay", [0.0, 0.05, 0.2])
+def test_ctrl_c_as_a_run_with_workers_ends_is_never_a_death_by_sigint(delay: float, tmp_path: Path) -> None:
+    # Ctrl-C just after the last line: the command has ended (0) or is still ending (130), never -2
+    # (the interpreter, exiting and joining the worker pool, restores the default handler).
+    with subprocess.Popen(
+        [sys.executable, "-c", CLI, "variants", "Biped", "--grid", "description=a,b,c,d"]
+        + ["--no-cache", "--jobs", "2", "-o", "out"],
+        cwd=tmp_path,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    ) as command:
+        assert command.stderr is not None
+        said = command.stderr.readline()
+        time.sleep(delay)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(command.pid, signal.SIGINT)
+        rest = command.stderr.read()
+    assert said.startswith("wrote 4 of 4 variants of Biped to out")
+    assert (command.wait(timeout=120), rest.endswith("interrupted\n")) in ((0, False), (130, True))
 
 
 def test_an_override_a_later_one_replaces_is_found_without_building() -> None:

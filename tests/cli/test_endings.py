@@ -18,7 +18,7 @@ from assembler.cli import main
 from assembler.files.paths import package_root
 from tests.conftest import TWO_LINK_MJCF
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 """The ``assembler`` command, run by this Python in a new process."""
 
 

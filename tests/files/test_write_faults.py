@@ -18,7 +18,7 @@ from assembler.cli import main
 from assembler.files import writing
 from tests.conftest import TETRAHEDRON_OBJ, TWO_LINK_MJCF
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 """The ``assembler`` command, run by this Python in a new process."""
 
 OLD = "<mujoco model='the user's previous output'/>\n"

@@ -70,7 +70,7 @@ def _install(wheels: list[Path], target: Path) -> dict[str, str]:
 
 
 def _assembler(env: dict[str, str], cwd: Path, *argv: str) -> subprocess.CompletedProcess[str]:
-    code = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+    code = "import sys; from assembler.cli import run; sys.exit(run())"
     return subprocess.run(
         [sys.executable, "-c", code, *argv], cwd=cwd, env=env, capture_output=True, text=True
     )

@@ -403,9 +403,7 @@ def test_shipped_robots_have_only_their_known_findings(
 def test_pre_commit_hooks_run_real_commands_on_spec_files(capsys: pytest.CaptureFixture[str]) -> None:
     hooks = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
     scripts = {
-        script.name
-        for script in entry_points(group="console_scripts")
-        if script.value == "assembler.cli:main"
+        script.name for script in entry_points(group="console_scripts") if script.value == "assembler.cli:run"
     }
     (subcommands,) = [a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction)]
     commands = set(subcommands.choices)

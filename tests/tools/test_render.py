@@ -152,7 +152,7 @@ def test_without_a_display_glfw_fails_with_what_to_set(tmp_path: Path) -> None:
         [
             sys.executable,
             "-c",
-            "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))",
+            "import sys; from assembler.cli import run; sys.exit(run())",
             "render",
             "Sparrow7",
             "-o",

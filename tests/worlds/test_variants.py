@@ -270,7 +270,7 @@ def test_a_new_run_never_leaves_the_old_manifest_beside_new_files(
     assert [line["overrides"] for line in manifest(folder)] == [{"joint_defaults.damping": 0.5}]
 
 
-CLI = "import sys; from assembler.cli import main; sys.exit(main(sys.argv[1:]))"
+CLI = "import sys; from assembler.cli import run; sys.exit(run())"
 
 
 def _children(pid: int) -> set[int]:
