@@ -37,13 +37,17 @@ from assembler.importers.reading import (
 from assembler.importers.robosuite_names import robosuite_names
 from assembler.importers.scene import scene_cut, scene_entry
 from assembler.importers.tree import read_tree
+from assembler.importers.wheels import base_entries, is_wheeled_base
 from assembler.registry.catalog import load_shipped_specs
 from assembler.registry.lookup import registered_names
 
-Kind = Literal["robot", "gripper"]
+Kind = Literal["robot", "gripper", "base"]
 
 HAND_WORDS = re.compile(r"hand|gripper", re.IGNORECASE)
 """Words in a file's model name, file name or folder that make it a gripper rather than an arm."""
+
+NAME_ENDINGS: dict[str, str] = {"robot": "Arm", "gripper": "Hand", "base": "Base"}
+"""What ends a spec's name when the file's name is taken already."""
 
 ARM_WITH_HAND = re.compile(r"with_?(hand|gripper)", re.IGNORECASE)
 """Words that say the file is an arm carrying its hand (``xarm6_with_gripper.urdf``)."""
@@ -127,19 +131,22 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
         if cut is not None and cut.cuts:
             file = read_model_file(model_path, cut.fixes)
     guessed_kind, why = _kind(file)
+    tree = read_tree(file.model, hand=(kind or guessed_kind) == "gripper")
+    if guessed_kind == "robot" and is_wheeled_base(tree):
+        guessed_kind, why = "base", "wheels and neither arm nor feet"
     chosen: Kind = kind or guessed_kind
     load_shipped_specs()
     source = name_source(file.source.pristine.modelname, file.path, scene=cut is not None)
     taken = {*registered_names(), *robosuite_names()}
-    name = free_name(camel_case(source), taken, "Hand" if chosen == "gripper" else "Arm")
+    name = free_name(camel_case(source), taken, NAME_ENDINGS[chosen])
     named = Entry("name", name).guess(f"from '{source}'; the registry and class name, yours to choose")
     if name != camel_case(source):
         named.guess(f"{camel_case(source)} is the name of a registered spec or of a robosuite class already")
     entries: list[Entry] = []
-    if chosen == "gripper":
-        kind_entry = Entry("kind", "gripper")
+    if chosen != "robot":
+        kind_entry = Entry("kind", chosen)
         if kind is None:
-            kind_entry.guess(f"{why}; an arm: delete this line (or run assembler new --kind robot)")
+            kind_entry.guess(f"{why}; a robot: delete this line (or run assembler new --kind robot)")
         entries.append(kind_entry)
     entries += [
         named,
@@ -147,9 +154,10 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
         _package_notes(_file_entry(file, spec_path), packages),
         *([scene_entry(cut)] if cut is not None else []),
     ]
-    tree = read_tree(file.model, hand=chosen == "gripper")
     if chosen == "gripper":
         entries += gripper_entries(file, tree)
+    elif chosen == "base":
+        entries += base_entries(file, tree)
     else:
         entries += legged_entries(file, tree) if tree.limbs is not None else robot_entries(file, tree)
     if chosen == "robot" and kind is None:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from assembler.errors import AssemblerError
 from assembler.registry.catalog import register_specs
-from assembler.registry.instances import assemble, create_gripper
+from assembler.registry.instances import assemble, create_base, create_gripper
 
 
 def build_problems(spec_path: Path, kind: str) -> list[str]:
@@ -17,6 +17,8 @@ def build_problems(spec_path: Path, kind: str) -> list[str]:
         (registered,) = register_specs(spec_path)
         if kind == "gripper":
             create_gripper(registered.__name__).compile_alone()
+        elif kind == "base":
+            create_base(registered.__name__).compile_alone()
         else:
             assemble(registered.__name__).get_model()
     except AssemblerError as error:

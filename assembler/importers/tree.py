@@ -28,6 +28,10 @@ FINGER_BODY_WORDS = re.compile(r"finger|jaw|claw|knuckle|thumb", re.IGNORECASE)
 GRIP_WORDS = re.compile(r"grip|pinch|tcp|eef|ee_site", re.IGNORECASE)
 """Site names vendors give a grip point."""
 
+WHEEL_WORDS = re.compile(r"wheel|caster|castor|tire|tyre|steer", re.IGNORECASE)
+"""Names of a wheeled robot's wheels and of the hinges steering them (racecar's
+``left_steering_hinge_joint``), on the joint or the body it turns."""
+
 PART_WORDS: dict[str, re.Pattern[str]] = {
     "torso": re.compile(r"torso", re.IGNORECASE),
     "head": re.compile(r"head|neck", re.IGNORECASE),
@@ -36,6 +40,8 @@ PART_WORDS: dict[str, re.Pattern[str]] = {
 
 FREE = int(mujoco.mjtJoint.mjJNT_FREE)
 """As an integer: on MuJoCo 4 enums compare unreliably with the items of model arrays."""
+
+HINGE = int(mujoco.mjtJoint.mjJNT_HINGE)
 
 
 @dataclass(frozen=True)
@@ -55,6 +61,8 @@ class Tree:
     limbs: Limbs | None = None
     """A legged robot's feet, legs and arms (then ``arm`` is its right arm, if any); None for a robot
     without feet (an arm, a wheeled base)."""
+    wheels: tuple[str, ...] = ()
+    """Wheels and the hinges steering them (also in ``base``: they move the whole robot)."""
 
 
 def _name(model: mujoco.MjModel, kind: mujoco.mjtObj, index: int) -> str:
@@ -70,8 +78,23 @@ def _ancestors(model: mujoco.MjModel, body: int) -> list[int]:
     return chain
 
 
-def _joint_count(model: mujoco.MjModel, body: int) -> int:
-    return sum(int(model.body_jntnum[b]) for b in _ancestors(model, body))
+def _joint_count(model: mujoco.MjModel, body: int, skip: frozenset[int] = frozenset()) -> int:
+    """The joints between the world and ``body``, but those in ``skip``."""
+    chain = set(_ancestors(model, body))
+    return sum(1 for j in range(model.njnt) if int(model.jnt_bodyid[j]) in chain and j not in skip)
+
+
+def _wheel_joints(model: mujoco.MjModel, joints: list[int]) -> list[int]:
+    """Hinges named like a wheel or its steering, or turning a body named so."""
+    return [
+        j
+        for j in joints
+        if int(model.jnt_type[j]) == HINGE
+        and (
+            WHEEL_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_JOINT, j))
+            or WHEEL_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_BODY, int(model.jnt_bodyid[j])))
+        )
+    ]
 
 
 def _common_ancestor(model: mujoco.MjModel, bodies: list[int]) -> int:
@@ -140,13 +163,15 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
     legged = _legged_tree(model, joints, names, roots, base)
     if legged is not None:
         return legged
+    wheels = [j for j in _wheel_joints(model, joints) if j not in base]
+    base += wheels  # wheels move the whole robot, as a mobile base's joints do
     fingers = _finger_joints(model, [j for j in joints if j not in base])
     parts = {
         part: [j for j in joints if j not in base and j not in fingers and words.search(names[j])]
         for part, words in PART_WORDS.items()
     }
     taken = {*base, *fingers, *parts["torso"], *parts["head"]}
-    deepest = max(range(1, model.nbody), key=lambda b: (_joint_count(model, b), -b))
+    deepest = max(range(1, model.nbody), key=lambda b: (_joint_count(model, b, frozenset(wheels)), -b))
     on_chain = set(_ancestors(model, deepest))
     arm = [j for j in joints if j not in taken and int(model.jnt_bodyid[j]) in on_chain]
     others = [j for j in joints if j not in taken and j not in arm]
@@ -162,6 +187,7 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
         eef_body=_name(model, mujoco.mjtObj.mjOBJ_BODY, eef),
         eef_by_name=by_name,
         grip_site=_grip_site(model, eef),
+        wheels=tuple(names[j] for j in wheels),
     )
 
 

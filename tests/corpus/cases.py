@@ -46,8 +46,8 @@ class Case:
 
     @property
     def robot(self) -> bool:
-        """Anything but a gripper: an arm, a legged robot, a humanoid."""
-        return self.kind != "gripper"
+        """Anything but a gripper or a base: an arm, a legged robot, a humanoid."""
+        return self.kind not in ("gripper", "base")
 
     def path(self) -> Path | None:
         """The model file in the installed package, or None when the package is absent."""
@@ -226,6 +226,8 @@ CASES: tuple[Case, ...] = (
         warnings={LAIKAGO_TOES: "a visual of radius 0 is left out, as MuJoCo's import leaves out visuals"},
     ),
     Case("pr2_gripper", "pybullet_data", "pybullet", "pr2_gripper.urdf", kind="gripper"),
+    Case("racecar", "pybullet_data", "pybullet", "racecar/racecar.urdf", kind="base"),
+    Case("r2d2", "pybullet_data", "pybullet", "r2d2.urdf", kind="base"),
     Case(
         "panda_pybullet",
         "pybullet_data",

@@ -36,6 +36,7 @@ CONVENTIONS = {
     "URDF visual geoms": "a URDF's <visual> geoms are kept in group 1 without contacts, as robosuite "
     "expects; MuJoCo's import puts them in group 0 with contacts: their group is not compared",
     "actuators": "the motors `assembler new` adds to a file without actuators are not in the vendor's file",
+    "stand-in load": "a mobile base built alone carries a 1 kg body on its support, where a robot goes",
 }
 """Where our build differs from MuJoCo's direct load on purpose (docs/add-your-robot.md lists them)."""
 
@@ -70,6 +71,8 @@ def _cases(stage: str, arms_only: bool = False, robots_only: bool = False) -> li
 def _part(case: Case, name: str) -> Any:
     if case.robot:
         return assembler.create_robot(name, idn=0)
+    if case.kind == "base":
+        return assembler.create_base(name, idn=0)
     return assembler.create_gripper(name, idn=0)
 
 
@@ -110,6 +113,28 @@ def test_a_fixed_base_arm_holds_its_home_pose_for_a_second_with_ctrl_at_home(
         mujoco.mj_step(model, data)
         worst = max(worst, float(np.max(np.abs(data.qpos - home))))
     assert worst < 0.1
+
+
+@pytest.mark.parametrize("case", [p for p in _cases("hold") if p.values[0].kind == "base"])
+def test_a_mobile_base_turns_its_wheels_at_the_commanded_speed_and_holds_the_rest(
+    case: Case, corpus: Corpus
+) -> None:
+    base = assembler.create_base(corpus.name(case), idn=0)
+    model = base.compile_alone()
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    home = data.qpos.copy()
+    joints = model.actuator_trnid[:, 0]
+    spinning = model.actuator_biastype == mujoco.mjtBias.mjBIAS_AFFINE  # velocity and position servos
+    spinning &= model.actuator_biasprm[:, 1] == 0  # velocity servos have no position term
+    assert spinning.any(), "no wheel got a velocity servo"
+    data.ctrl[:] = np.where(spinning, 2.0, home[model.jnt_qposadr[joints]])  # 2 rad/s; the rest at home
+    for _ in range(round(1.0 / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    speeds = data.qvel[model.jnt_dofadr[joints[spinning]]]
+    held = model.jnt_qposadr[joints[~spinning]]
+    np.testing.assert_allclose(speeds, 2.0, rtol=0.02)
+    assert np.all(np.abs(data.qpos[held] - home[held]) < 0.1)
 
 
 JAWS = ("so101", "so101_urdf", "fetch", "metaworld_sawyer", "aloha_viperx", "panda_erd", "panda_pybullet")
@@ -162,8 +187,9 @@ def test_the_build_equals_mujocos_direct_load_of_the_vendors_file(case: Case, co
     ours_pose, theirs_pose = _pose(ours, ours.body(prefix + root_name).id), _pose(theirs, 1)
     colours = part.spec.source_field == "mjcf"
     counts = ("nbody", "njnt", "ngeom", "nsite", "neq", "ntendon", "nsensor", "nuser_actuator", "nuser_jnt")
+    stand_in = int(case.kind == "base")  # the load a base built alone carries (CONVENTIONS)
     assert [getattr(ours, n) for n in counts] == [
-        getattr(theirs, n) for n in counts
+        getattr(theirs, n) + (stand_in if n == "nbody" else 0) for n in counts
     ]  # nothing more, nothing less, and every user-data column
     for body in range(1, theirs.nbody):
         name = theirs.body(body).name
