@@ -9,7 +9,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from assembler.mjcf.refusal import original_lines
+from assembler.mjcf.xml_guard import original_lines
 
 
 @dataclass

@@ -7,7 +7,7 @@ MjSpec's ``attach`` drops what it cannot resolve without a word, so the assemble
 build, the assembly holds at least the elements of its parts (each base type says what it
 contributes: ``RobotBaseModel.census_contribution``), and a compiled model holds
 as many as the spec it was compiled from. A shortfall is a bug in the assembler, not a user's
-mistake (every file is first checked as MuJoCo checks it: :mod:`assembler.mjcf.file_check`), so it
+mistake (every file is first checked as MuJoCo checks it: :mod:`assembler.mjcf.xml_guard`), so it
 raises :class:`ElementsLost`, which the CLI does not catch: it crashes loudly with a traceback.
 
 Keyframes are not counted: every part's keyframes are replaced by the assembly's one ``home``.

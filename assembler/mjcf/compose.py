@@ -32,10 +32,9 @@ from numpy.typing import ArrayLike
 from assembler.errors import MjcfError, summarize_names
 from assembler.files.paths import display_path
 from assembler.mjcf.emit import to_xml
-from assembler.mjcf.removal import remove_free_joints
+from assembler.mjcf.joints import FREE, remove_free_joints
 from assembler.mjcf.versions import mujoco_at_least
 
-FREE = mujoco.mjtJoint.mjJNT_FREE
 MANIPULATOR_MOUNT = "manipulator_mount"
 
 USER_COLUMNS: tuple[str, ...] = (

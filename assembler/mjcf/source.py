@@ -1,16 +1,26 @@
-"""Loading an MJCF file once: a pristine MjSpec with absolute asset paths, plus what we learn from it.
+"""Loading an MJCF file once: a pristine MjSpec with absolute asset paths, plus what we learn from
+it; and the part a file gives: its single, named root body, or one body and everything below it.
 
 Each robot instance gets a cheap copy of the pristine spec. Asset paths are made absolute (and
 ``meshdir``/``texturedir`` cleared) before anything is attached, because ``MjSpec.to_xml`` keeps only
 the outermost model's directories: without this the emitted XML would not load from another
 working directory. Every asset path must stay in the allowed folders (:func:`assembler.files.paths.confine`),
 and the file passes :mod:`assembler.mjcf.xml_guard` before any parser reads it. Once read, the file
-is compiled on its own as MuJoCo would (:mod:`assembler.mjcf.file_check`): what MuJoCo refuses is
-refused here, with the file's line, rather than dropped by ``MjSpec.attach`` later.
+is compiled on its own as MuJoCo would (:func:`assembler.mjcf.xml_guard.check_as_mujoco`): what
+MuJoCo refuses is refused here, with the file's line, rather than dropped by ``MjSpec.attach`` later.
+
+One body of an MJCF file and everything below it can be a part of its own (a jaw in an arm's file:
+:func:`subtree_source`). MuJoCo copies a body's subtree into another spec together with what refers
+only to it (actuators and sensors of its joints, the materials and meshes it uses, its default
+classes). The copy is then written out and read again, so the part is a spec of its own like any
+file's (its bodies' poses taken from the file's spec, at full precision); a temporary prefix keeps
+the copy's default classes apart from the new spec's own (MuJoCo 3.9 cannot write an unprefixed
+copy), and is taken off every name again in the written text.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import os
 import xml.etree.ElementTree as ET
@@ -27,13 +37,20 @@ from assembler.files.paths import allowed_folders, confine, display_path, homes_
 from assembler.files.regular import not_regular
 from assembler.mjcf import mujoco_warnings
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
-from assembler.mjcf.asset_names import name_assets_after_files
 from assembler.mjcf.compose import refuse_unattachable, settle_default_site_materials
-from assembler.mjcf.file_check import check_as_mujoco
+from assembler.mjcf.emit import to_xml
 from assembler.mjcf.fixes import apply_fixes
 from assembler.mjcf.joints import Authored, authored_attributes, named_joints
-from assembler.mjcf.refusal import LineMap, original_lines, refusal_line, repaired_lines, same_lines
-from assembler.mjcf.xml_guard import check_mjcf
+from assembler.mjcf.xml_guard import (
+    LineMap,
+    check_as_mujoco,
+    check_mjcf,
+    name_assets_after_files,
+    original_lines,
+    refusal_line,
+    repaired_lines,
+    same_lines,
+)
 from assembler.spec.schema.fixes import MjcfFix
 
 GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "statistic")
@@ -42,6 +59,10 @@ GLOBAL_SECTIONS: tuple[str, ...] = ("compiler", "option", "size", "visual", "sta
 DIRECTORY_ATTRIBUTES: tuple[str, ...] = ("meshdir", "texturedir", "assetdir")
 
 _FIXES = TypeAdapter(list[MjcfFix])
+
+_SUBTREE_PREFIX = "subtree__"
+_SUBTREE_MAIN = "subtree_main"
+"""A subtree part's main default class, which must not become a second class named 'main'."""
 
 
 @dataclass(frozen=True)
@@ -285,3 +306,44 @@ def load_mjcf(reference: str, fixes: Sequence[MjcfFix] = ()) -> MjcfSource:
         _load.cache_clear()
         source = _load(*arguments)
     return source
+
+
+def root_body_name(source: MjcfSource) -> str:
+    """The single body directly in the file's worldbody; the part's root."""
+    roots = [body.name for body in source.pristine.worldbody.bodies]
+    if len(roots) != 1:
+        found = ", ".join(repr(name or "(unnamed)") for name in roots) or "none"
+        raise MjcfError(
+            f"{display_path(source.path)}: expected exactly one body in <worldbody>, found "
+            f"{len(roots)} ({found}); wrap the parts in one root body"
+        )
+    if not roots[0]:
+        raise MjcfError(f"{display_path(source.path)}: the root body needs a name")
+    return str(roots[0])
+
+
+def subtree_source(source: MjcfSource, body: str) -> MjcfSource:
+    """``source`` reduced to ``body`` and its descendants, the body's pose in its parent kept."""
+    copy = source.new_spec()  # the attach below renames what it attaches, in place
+    top = copy.body(body)
+    if top is None:
+        names = ", ".join(b.name for b in source.pristine.bodies[1:] if b.name)
+        raise MjcfError(f"{display_path(source.path)}: no body named '{body}'; its bodies: {names}")
+    part = mujoco.MjSpec()
+    part.compiler.degree = source.pristine.compiler.degree
+    part.worldbody.add_frame().attach_body(top, _SUBTREE_PREFIX, "")
+    with mujoco_warnings.collected():
+        text = to_xml(part)  # every digit: MuJoCo's writer keeps six (ranges, masses, inertias)
+    text = text.replace(f'"{_SUBTREE_PREFIX}main"', f'"{_SUBTREE_MAIN}"').replace(
+        f'="{_SUBTREE_PREFIX}', '="'
+    )
+    spec = mujoco.MjSpec.from_string(text)
+    for copied in spec.bodies[1:]:  # poses as given, not as written (MuJoCo writes 6 digits)
+        given = copy.body(_SUBTREE_PREFIX + copied.name)
+        copied.pos, copied.quat, copied.alt = given.pos, given.quat, given.alt
+    kept = {joint.name for joint in spec.joints}
+    authored = tuple(
+        a for j, a in zip(source.pristine.joints, source.authored, strict=True) if j.name in kept
+    )
+    note = f"the part is body '{body}' of the file and everything below it"
+    return dataclasses.replace(source, pristine=spec, authored=authored, notes=(*source.notes, note))

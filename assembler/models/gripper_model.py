@@ -11,8 +11,7 @@ import numpy as np
 
 from assembler.errors import AssemblerError, MjcfError, Problem
 from assembler.mjcf.compose import place_root
-from assembler.mjcf.source import MjcfSource
-from assembler.mjcf.subtree import subtree_source
+from assembler.mjcf.source import MjcfSource, subtree_source
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart

@@ -14,10 +14,16 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.errors import MjcfError, Problem, SpecError, summarize_names
-from assembler.mjcf.joints import add_free_joint, add_joints, joint_attribute, named_joints
-from assembler.mjcf.removal import remove_bodies, remove_free_joints, remove_joints
-from assembler.mjcf.source import MjcfSource
-from assembler.mjcf.structure import root_body_name
+from assembler.mjcf.joints import (
+    add_free_joint,
+    add_joints,
+    joint_attribute,
+    named_joints,
+    remove_bodies,
+    remove_free_joints,
+    remove_joints,
+)
+from assembler.mjcf.source import MjcfSource, root_body_name
 from assembler.models.actuator_table import ActuatorRecord, declare_actuators
 from assembler.models.joint_rules import (
     JointTable,
