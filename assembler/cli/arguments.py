@@ -356,7 +356,9 @@ COMMANDS: tuple[Command, ...] = (
         _lock,
         "assembler.cli.validate",
     ),
-    Command("lint", "report problems MuJoCo accepts silently (codes RA101...)", _lint, "assembler.cli.lint"),
+    Command(
+        "lint", "report problems MuJoCo accepts silently (codes RA101...)", _lint, "assembler.cli.checking"
+    ),
     Command("build", "write a robot's standalone MJCF", _build, "assembler.cli.build"),
     Command("scene", "several placed robots in one MJCF", _scene, "assembler.cli.scene"),
     Command(
@@ -369,13 +371,13 @@ COMMANDS: tuple[Command, ...] = (
         "variants",
         "one MJCF per variant: a grid of values, random draws",
         _variants,
-        "assembler.cli.variants",
+        "assembler.cli.making",
     ),
     Command(
         "inspect",
         "joint parameters and actuators, and where each value came from",
         _inspect,
-        "assembler.cli.inspect",
+        "assembler.cli.showing",
     ),
     Command(
         "schema", "print the JSON Schema of spec files (or --markdown docs)", _schema, "assembler.cli.schema"
