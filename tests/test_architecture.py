@@ -162,7 +162,7 @@ stay light, issue 16), with the names also imported under TYPE_CHECKING for type
 
 DEFERRED = {
     ("assembler.cli", "assembler.cli.cached_build"): "a cached build is answered before the commands load",
-    ("assembler.cli", "assembler.cli.dispatch"): "the commands' modules load after parsing",
+    ("assembler.cli", "assembler.cli.common"): "the commands' modules load after parsing",
     (
         "assembler.robosuite.hook",
         "assembler.robosuite",

@@ -1,10 +1,11 @@
 """The ``assembler`` command: parse arguments, call the API, print, return an exit code.
 
 Arguments are defined in :mod:`assembler.cli.arguments` (light: ``--help`` imports nothing else);
-each subcommand's ``run(args)`` lives in its own module, imported when it runs
-(:mod:`assembler.cli.dispatch`). Exit codes: 0 success, 1 a problem in the user's input (one
-line per problem, no traceback), 2 a usage error (argparse's own), 130 interrupted, 141 output
-closed early (:mod:`assembler.cli.endings`).
+each subcommand's ``run_<command>(args)`` lives in the module of its kind
+(:mod:`~assembler.cli.build`, :mod:`~assembler.cli.checking`, :mod:`~assembler.cli.showing`,
+:mod:`~assembler.cli.making`), imported when it runs (:func:`assembler.cli.common.run_command`).
+Exit codes: 0 success, 1 a problem in the user's input (one line per problem, no traceback), 2 a
+usage error (argparse's own), 130 interrupted, 141 output closed early (:mod:`assembler.cli.endings`).
 """
 
 from __future__ import annotations
@@ -75,7 +76,7 @@ def main(argv: Sequence[str] | None = None, *, process_ends: bool = False) -> in
                 answered = importlib.import_module("assembler.cli.cached_build").answer(args)
                 if answered is not None:
                     return int(answered)
-            dispatch = importlib.import_module("assembler.cli.dispatch")  # the heavy part, after parsing
-            return int(dispatch.run_command(args))
+            common = importlib.import_module("assembler.cli.common")  # the heavy part, after parsing
+            return int(common.run_command(args))
 
     return end_cleanly(command, process_ends=process_ends)

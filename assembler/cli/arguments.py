@@ -1,6 +1,6 @@
 """Every command's arguments, and nothing heavier than ``argparse``: ``assembler --help`` and a typo in
-a flag answer without importing MuJoCo, numpy or pydantic. Each command's ``run(args)`` lives in its
-own module, imported only when that command runs (:data:`COMMANDS`).
+a flag answer without importing MuJoCo, numpy or pydantic. Each command's ``run_<command>(args)`` lives
+in the module of its kind of command, imported only when that command runs (:data:`COMMANDS`).
 """
 
 from __future__ import annotations
@@ -336,57 +336,71 @@ def _cache(parser: argparse.ArgumentParser) -> None:
 
 @dataclass(frozen=True)
 class Command:
-    """A subcommand: its name, what ``--help`` says of it, its arguments, and the module whose
-    ``run(args)`` carries it out."""
+    """A subcommand: its name, what ``--help`` says of it, its arguments, and the module and function
+    (taking the parsed ``args``, returning the exit code) that carry it out."""
 
     name: str
     help: str
     define: Define
     module: str
+    function: str
     description: str | None = None
     epilog: str | None = None
 
 
 COMMANDS: tuple[Command, ...] = (
-    Command("list", "registered robots (or bases, grippers)", _list, "assembler.cli.listing"),
-    Command("validate", "check spec files and folders", _validate, "assembler.cli.validate"),
+    Command("list", "registered robots (or bases, grippers)", _list, "assembler.cli.showing", "run_list"),
+    Command("validate", "check spec files and folders", _validate, "assembler.cli.checking", "run_validate"),
     Command(
         "lock",
         "write robot-assembler.lock: the sha256 of every file each robot's build reads",
         _lock,
-        "assembler.cli.validate",
+        "assembler.cli.checking",
+        "run_lock",
     ),
     Command(
-        "lint", "report problems MuJoCo accepts silently (codes RA101...)", _lint, "assembler.cli.checking"
+        "lint",
+        "report problems MuJoCo accepts silently (codes RA101...)",
+        _lint,
+        "assembler.cli.checking",
+        "run_lint",
     ),
-    Command("build", "write a robot's standalone MJCF", _build, "assembler.cli.build"),
-    Command("scene", "several placed robots in one MJCF", _scene, "assembler.cli.scene"),
+    Command("build", "write a robot's standalone MJCF", _build, "assembler.cli.build", "run_build"),
+    Command("scene", "several placed robots in one MJCF", _scene, "assembler.cli.making", "run_scene"),
     Command(
         "experiment",
         "an experiment file's robots, with overrides, in one MJCF",
         _experiment,
-        "assembler.cli.experiment",
+        "assembler.cli.making",
+        "run_experiment",
     ),
     Command(
         "variants",
         "one MJCF per variant: a grid of values, random draws",
         _variants,
         "assembler.cli.making",
+        "run_variants",
     ),
     Command(
         "inspect",
         "joint parameters and actuators, and where each value came from",
         _inspect,
         "assembler.cli.showing",
+        "run_inspect",
     ),
     Command(
-        "schema", "print the JSON Schema of spec files (or --markdown docs)", _schema, "assembler.cli.schema"
+        "schema",
+        "print the JSON Schema of spec files (or --markdown docs)",
+        _schema,
+        "assembler.cli.checking",
+        "run_schema",
     ),
     Command(
         "diff",
         "compare two specs: changed fields and compiled-model differences",
         _diff,
-        "assembler.cli.diff",
+        "assembler.cli.showing",
+        "run_diff",
         description="Compare two specs: the fields that changed, and what changed in the compiled "
         "model (robots with their default base and grippers). Each side is a spec file, a registered "
         "name, or FILE@REVISION (read with git show; a parent spec it extends by file path is read "
@@ -396,7 +410,8 @@ COMMANDS: tuple[Command, ...] = (
         "render",
         "write a PNG of the assembled robot in its home pose",
         _render,
-        "assembler.cli.render",
+        "assembler.cli.making",
+        "run_render",
         description="Render the assembled robot in its home pose (keyframe 'home') with MuJoCo's "
         "offscreen renderer, auto-framed, on a floor, one tile per view.",
         epilog="Headless Linux: when MUJOCO_GL is unset and there is no DISPLAY, MUJOCO_GL=egl is "
@@ -406,13 +421,14 @@ COMMANDS: tuple[Command, ...] = (
         "new",
         "write a first spec for a vendor's MJCF or URDF, every guess commented",
         _new,
-        "assembler.cli.new",
+        "assembler.cli.making",
+        "run_new",
         description="Read an MJCF or URDF file as a spec would and write a spec that validates and builds "
         "as written: name, file, joint groups, end-effector, home pose, actuators where the file has none. "
         "Comments mark each guess ('guess:') and what only you can decide ('decide:', with the field to "
         "set); docs/add-your-robot.md explains each. The model file is never changed.",
     ),
-    Command("cache", "show or empty the compiled-model cache", _cache, "assembler.cli.cache"),
+    Command("cache", "show or empty the compiled-model cache", _cache, "assembler.cli.build", "run_cache"),
 )
 """The subcommands, in the order ``assembler --help`` lists them."""
 
@@ -430,7 +446,7 @@ def build_parser() -> argparse.ArgumentParser:
         )
         command.define(subparser)
         add_global_options(subparser, after_command=True)
-        subparser.set_defaults(module=command.module)
+        subparser.set_defaults(module=command.module, function=command.function)
     return parser
 
 

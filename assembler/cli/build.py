@@ -1,6 +1,8 @@
-"""``assembler build``: write a robot's standalone MJCF (to a file, a bundle folder or stdout), and
-record the request so the same build next time is answered before any spec is read
-(:mod:`assembler.cli.cached_build`)."""
+"""Building and the cache: ``assembler build`` writes a robot's standalone MJCF (to a file, a bundle
+folder or stdout) and records the request, so the same build next time is answered before any spec
+is read (:mod:`assembler.cli.cached_build`, kept apart: it must load without the spec layer);
+``assembler cache info|clear`` says where the cache is and what each of its parts holds, and empties
+it (every part: :mod:`assembler.cache.folder`)."""
 
 from __future__ import annotations
 
@@ -9,8 +11,15 @@ import sys
 from pathlib import Path
 
 from assembler.answers.request import record_answer
+from assembler.cache import cache_disabled
+from assembler.cache.folder import LABELS
+from assembler.cache.folder import info as folder_info
 from assembler.cli.cached_build import build_flags, request_of, write_xml
-from assembler.cli.common import assembled, idle_override_warnings, robot_name, use_cache
+from assembler.cli.common import assembled, idle_override_warnings, robot_name, table, use_cache
+from assembler.compiler.service import clear, default_store
+from assembler.errors import AssemblerError
+from assembler.files.cache_location import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
+from assembler.files.paths import display_path
 from assembler.gpu.put_model_check import check_with_mujoco_warp
 from assembler.registry.instances import create_gripper
 from assembler.registry.lookup import REGISTERED_GRIPPERS, REGISTERED_ROBOTS
@@ -27,7 +36,7 @@ def _gripper_alone(args: argparse.Namespace) -> bool:
     return True
 
 
-def run(args: argparse.Namespace) -> int:
+def run_build(args: argparse.Namespace) -> int:
     if _gripper_alone(args):
         return 0
     robot = assembled(args)
@@ -46,4 +55,40 @@ def run(args: argparse.Namespace) -> int:
         record_answer(
             request, robot, [Path(folder) for folder in args.specs], build_flags(args).robot_file, notes
         )
+    return 0
+
+
+def run_cache(args: argparse.Namespace) -> int:
+    store = default_store()
+    if args.action == "clear":
+        before = clear(store)
+        if before.not_removed:
+            raise AssemblerError(
+                f"could not remove {len(before.not_removed)} file(s) from {display_path(before.directory)}; "
+                f"first: {before.not_removed[0]}"
+            )
+        files = sum(part.files for part in before.parts.values())
+        print(
+            f"removed {files} file{'s' if files != 1 else ''} ({format_size(before.total_bytes)}) "
+            f"from {display_path(before.directory)}"
+        )
+        return 0
+    info = store.info()
+    if cache_disabled():
+        status = f"disabled ({DISABLE_VARIABLE} is set)"
+    else:
+        status = f"unusable: {info.problem}" if info.problem else "enabled"
+    whole = folder_info(store.directory)
+    rows = [
+        ("location", display_path(info.directory)),
+        ("entries", str(info.entries)),
+        *(
+            (LABELS[part], f"{found.files} files ({format_size(found.total_bytes)})")
+            for part, found in whole.parts.items()
+        ),
+        ("size", format_size(whole.total_bytes)),
+        ("limit", f"{format_size(max_bytes())} ({MAX_BYTES_VARIABLE}), every part together"),
+        ("status", status),
+    ]
+    print(table(rows))
     return 0

@@ -1,20 +1,32 @@
-"""What several commands share: finding a robot from a name or a spec file, the build flags,
+"""What the commands share: running one parsed command (the user's spec folders and allowed paths
+first, then the function :data:`~assembler.cli.arguments.COMMANDS` names, its module imported now, so
+``assembler --help`` never pays for it), finding a robot from a name or a spec file, the build flags,
 and printing aligned tables."""
 
 from __future__ import annotations
 
 import argparse
+import importlib
 from collections.abc import Sequence
 
 from assembler.errors import AssemblerError
 from assembler.files.inputs import note_inputs
+from assembler.files.paths import allowing
 from assembler.models import RobotModel
-from assembler.registry.catalog import register_with_siblings
+from assembler.registry.catalog import add_spec_folders, register_with_siblings
 from assembler.registry.instances import assemble, create_robot
 from assembler.registry.lookup import robot_class
 from assembler.spec.documents import Override, parse_overrides
 from assembler.spec.part_arguments import DEFAULT, is_spec_file
 from assembler.worlds.variants.effects import overrides_without_effect, superseded
+
+
+def run_command(args: argparse.Namespace) -> int:
+    """Carry out the command ``args`` names and return its exit code."""
+    with allowing(args.allow_path):
+        add_spec_folders(args.specs)
+        command = getattr(importlib.import_module(args.module), args.function)
+        return int(command(args))
 
 
 def robot_name(reference: str) -> str:

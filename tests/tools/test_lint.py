@@ -14,7 +14,7 @@ import yaml
 
 import assembler.registry.catalog  # noqa: F401  (registers the shipped specs)
 from assembler.cli import build_parser, main
-from assembler.cli.report import github_annotation
+from assembler.cli.checking import github_annotation
 from assembler.errors import Location
 
 ROOT = Path(__file__).parents[2]
