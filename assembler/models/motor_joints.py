@@ -171,6 +171,21 @@ def add_motor_actuators(
     return records + added, problems
 
 
+def voltage_limits(entries: Sequence[JointMotor], records: Sequence[ActuatorRecord]) -> dict[str, Derived]:
+    """The part's actuators (by record name, unprefixed) that take volts (a ``motors:`` entry's
+    ``control: voltage``) -> the joint torque limit the same entry gives with ``control: torque``,
+    ±(peak or stall torque)·N·η: what a controller that writes torques (robosuite's) may ask of them."""
+    limits: dict[str, Derived] = {}
+    for record in records:
+        if record.section != "motors" or record.entry is None or entries[record.entry].control != "voltage":
+            continue
+        entry = entries[record.entry]
+        limit = Drive(MOTORS.lookup(entry.motor).spec, entry, record.entry).torque_limit()
+        assert limit is not None  # a motor that can take volts gives a stall torque (motor_drives checked)
+        limits[record.name] = limit
+    return limits
+
+
 def derivation_lines(prefix: str, joints: JointTable, records: Sequence[ActuatorRecord]) -> list[str]:
     """Every motor-derived value with its motor, formula and numbers, one line each, for ``inspect``:
     ``robot0_knee  armature 0.00972 = 1.12e-05 kg·m² × 29.5²  (motor M, motors[0])``."""

@@ -3,13 +3,14 @@
 robosuite's arm controllers (OSC, joint torque, IK) write torques into ``ctrl``. A robot whose MJCF
 drives its arms with position servos says what robosuite should do with them
 (``robosuite.actuation``): ``torque`` turns each servo into a motor whose control range is the
-servo's force range; ``as_is`` keeps them. Never guessed: a robot with arm servos that says neither
-is an error that names them.
+servo's force range, and each DC motor a ``motors:`` entry drives in volts into a motor whose ctrl is
+the joint torque within the motor's torque limit; ``as_is`` keeps them. Never guessed: a robot with
+such actuators on its arms that says neither is an error that names them.
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 
 import mujoco
 
@@ -42,3 +43,15 @@ def motorize(servos: Collection[mujoco.MjsActuator]) -> None:
         actuator.ctrlrange = [low, high]
         actuator.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
         actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
+
+
+def torque_motors(mjspec: mujoco.MjSpec, limits: Mapping[str, float]) -> None:
+    """Turn each actuator named in ``limits`` (a DC motor that takes volts) into the motor ``control:
+    torque`` gives its joint: ctrl is the joint torque (gear 1), ctrlrange = forcerange = ±limit."""
+    for name, limit in limits.items():
+        actuator = mjspec.actuator(name)
+        actuator.set_to_motor()  # gain 1, no bias, no dynamics: the back-EMF is the driver's to handle
+        actuator.gear = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+        for attribute in ("ctrl", "force"):
+            setattr(actuator, f"{attribute}range", [-limit, limit])
+            setattr(actuator, f"{attribute}limited", mujoco.mjtLimited.mjLIMITED_TRUE)

@@ -5,9 +5,9 @@ functions where those need no robosuite, so the two cannot disagree; robosuite n
 
 - RA701, RA704, robots: robosuite's arm controllers write torques into ``ctrl``, so the bridge needs
   to be told what to do with position servos there (``robosuite.actuation``; an error for a robot
-  robosuite is offered, ``robosuite.enabled``, the default, a warning otherwise), and turning a servo
-  into a motor takes its force range. The composite controller reads each arm's origin from a site
-  ``{arm}_center`` at every step.
+  robosuite is offered, ``robosuite.enabled``, the default, a warning otherwise) and with DC motors a
+  ``motors:`` entry drives in volts (the same), and turning a servo into a motor takes its force
+  range. The composite controller reads each arm's origin from a site ``{arm}_center`` at every step.
 - RA702-RA703, grippers: robosuite finds a gripper's frame by a body named ``eef`` and its grip
   point by the sites ``grip_site`` and ``grip_site_cylinder``; where a gripper lacks them, the bridge
   adds them at the spec's ``eef_body`` (RA702, info). robosuite refuses a gripper with actuators that
@@ -36,6 +36,7 @@ from assembler.robosuite.conventions import (
     GRIP_FRAMES,
     arm_center_site,
     driven_actuators,
+    driven_voltage_motors,
     grip_sensors,
     has_force_range,
     is_bridge_servo,
@@ -57,27 +58,40 @@ def _robots(target: LintTarget) -> Iterator[ManipulatorModel]:
 
 
 def servos_robosuite_cannot_drive(target: LintTarget) -> Iterator[Finding]:
-    """RA701: robosuite's controllers would drive position servos, and the spec sets no
-    ``robosuite.actuation`` (warning), or sets ``torque`` for a servo without forcerange (error)."""
+    """RA701: robosuite's controllers would drive position servos or DC motors taking volts, and the spec
+    sets no ``robosuite.actuation`` (warning), or sets ``torque`` for a servo without forcerange (error)."""
     model = target.model
     for robot in _robots(target):
         ids = {name: mujoco.mj_name2id(model, ACTUATOR, name) for name in driven_actuators(robot)}
         servos = [name for name, index in ids.items() if index >= 0 and is_bridge_servo(model, index)]
         choice = robot.spec.robosuite.actuation
-        if servos and choice is None:
+        undecided = (
+            (
+                servos,
+                "are position servos",
+                "each servo becomes a motor whose ctrlrange is its forcerange",
+                "keep the servos",
+            ),
+            (
+                [robot.naming_prefix + name for name in driven_voltage_motors(robot)],
+                "take volts (motors: control: voltage)",
+                "each becomes a motor within its motor's torque limit, ±(peak or stall torque)·N·η",
+                "keep volts",
+            ),
+        )
+        for names, what, torque, kept in undecided if choice is None else ():
+            if not names:
+                continue
             yield Finding(
                 code="RA701",
                 severity="error" if robot.spec.robosuite.enabled else "warning",
                 subject=type(robot).__name__,
                 why=(
-                    f"the actuators robosuite's controllers drive ({', '.join(servos)}) are position servos, "
-                    "but those controllers write torques into ctrl and robosuite.actuation is not set: "
-                    "robosuite refuses the robot"
+                    f"the actuators robosuite's controllers drive ({', '.join(names)}) {what}, but those "
+                    "controllers write torques into ctrl and robosuite.actuation is not set: robosuite "
+                    "refuses the robot"
                 ),
-                fix=(
-                    "set robosuite.actuation to torque (each servo becomes a motor whose ctrlrange is its "
-                    "forcerange) or to as_is (keep the servos)"
-                ),
+                fix=f"set robosuite.actuation to torque ({torque}) or to as_is ({kept})",
                 location=target.spec_location(robot, ACTUATION),
             )
         if choice != "torque":

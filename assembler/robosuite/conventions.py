@@ -13,6 +13,8 @@ from collections.abc import Sequence
 import mujoco
 
 from assembler.models import REGISTERED_BASES, ManipulatorModel, PartModel
+from assembler.models.motor_joints import voltage_limits
+from assembler.models.motor_rules import Derived
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import RobotSpec
 
@@ -112,6 +114,15 @@ def driven_actuators(robot: ManipulatorModel) -> list[str]:
     groups = robot.actuator_groups()
     named = [name for group in DRIVEN_GROUPS[robot_type_name(type(robot))] for name in groups.get(group, [])]
     return [name for name in named if name.startswith(robot.naming_prefix)]
+
+
+def driven_voltage_motors(robot: ManipulatorModel) -> dict[str, Derived]:
+    """The actuators robosuite's controllers drive (unprefixed) that take volts (a ``motors:`` entry's
+    ``control: voltage``) -> the joint torque limit, ±(peak or stall torque)·N·η, of the motor each
+    becomes under ``robosuite.actuation: torque``."""
+    driven = {name.removeprefix(robot.naming_prefix) for name in driven_actuators(robot)}
+    limits = voltage_limits(robot.spec.motors, robot.actuator_table)
+    return {name: limit for name, limit in limits.items() if name in driven}
 
 
 def is_bridge_servo(model: mujoco.MjModel, actuator: int) -> bool:

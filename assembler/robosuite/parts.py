@@ -5,7 +5,8 @@ listed name up in the compiled world. So the file robosuite reads for a gripper 
 assembly our robot builds must name every element alike: a part made for robosuite
 (:func:`robosuite_part`, an instance of our spec class, no class of its own) has an ``adaptation``
 that gives unnamed geoms robosuite's names and, for a robot whose spec says
-``robosuite.actuation: torque``, drives with motors what robosuite's controllers drive. The
+``robosuite.actuation: torque``, drives with torque motors what robosuite's controllers drive (its
+position servos, and its DC motors driven in volts). The
 text is the lossless emission, kept in the cache across processes (:mod:`.files`).
 """
 
@@ -20,13 +21,14 @@ from assembler.errors import AssemblerWarning, SpecError
 from assembler.mjcf.census import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.models.collision_colour import colour_collision_geoms
-from assembler.robosuite.actuation import has_force_range, motorize, position_servos
+from assembler.robosuite.actuation import has_force_range, motorize, position_servos, torque_motors
 from assembler.robosuite.arm_centers import add_arm_centers
 from assembler.robosuite.conventions import (
     ACTUATION,
     DRIVEN_GROUPS,
     INERTIA_GROUPS,
     driven_actuators,
+    driven_voltage_motors,
     robot_type_name,
 )
 from assembler.robosuite.files import robosuite_file
@@ -89,6 +91,17 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 "as its ctrlrange) or to as_is (keep the servos)",
             )
         )
+    voltage = driven_voltage_motors(robot)
+    if voltage and choice is None:
+        raise SpecError(
+            robot.spec_problem(
+                ACTUATION,
+                f"the actuators {', '.join(voltage)} take volts (motors: control: voltage), but robosuite's "
+                "controllers write torques into them: set robosuite.actuation to torque (each becomes a "
+                "motor within its motor's torque limit, ±(peak or stall torque)·N·η) or to as_is "
+                "(keep volts)",
+            )
+        )
     if choice == "torque":
         unbounded = [servo.name for servo in servos if not has_force_range(servo)]
         if unbounded:
@@ -100,6 +113,7 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 )
             )
         motorize(servos)
+        torque_motors(mjspec, {name: limit.value for name, limit in voltage.items()})
 
 
 def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:

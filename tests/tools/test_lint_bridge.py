@@ -51,6 +51,8 @@ NOT_ABOUT_A_SPEC: dict[tuple[str, str], str] = {
 
 NO_ACTIONS = {"hand/finger.xml": FINGER_MJCF, "hand/finger.yaml": FINGER_SPEC.split("actions:")[0]}
 NO_TORQUE = PROBE_SPEC.replace("robosuite: {actuation: torque}\n", "")
+IN_VOLTS = NO_TORQUE + "motors:\n  - {match: '*', motor: MaxonECmax22, gear_ratio: 53, control: voltage}\n"
+"""The probe's joints driven in volts by a shipped motor (its actuators replace the servos)."""
 
 
 def _probe(spec: str = PROBE_SPEC, mjcf: str = PROBE_MJCF, **more: str) -> dict[str, str]:
@@ -79,6 +81,7 @@ REFUSALS: dict[tuple[str, str], tuple[str, dict[str, str], str]] = {
         "but elbow has none",
     ),
     ("parts.py", "are position servos"): ("RA701", _probe(NO_TORQUE), "are position servos"),
+    ("parts.py", "take volts"): ("RA701", _probe(IN_VOLTS), "the actuators shoulder, elbow take volts"),
     ("parts.py", "no forcerange to become"): (
         "RA701",
         _probe(mjcf=PROBE_MJCF.replace(' forcerange="-40 40"', "")),

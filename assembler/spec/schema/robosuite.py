@@ -39,8 +39,10 @@ class RobosuiteOptions(StrictModel):
     actuation: Actuation | None = None
     """torque: each position servo robosuite's controllers drive (the arms'; the torso's and head's on a
     wheeled or legged robot; the legs' on a legged robot) becomes a motor whose ctrlrange is the servo's
-    forcerange (each must give one); as_is: keep the actuators as the MJCF has them; null: as_is when none
-    of them is a position servo, else an error that asks you to choose."""
+    forcerange (each must give one), and each DC motor a motors: entry drives in volts becomes the motor
+    control: torque gives its joint (ctrlrange ±(peak or stall torque)·N·η); as_is: keep the actuators as
+    the MJCF and the motors: entries make them; null: as_is when none of them is a position servo or takes
+    volts, else an error that asks you to choose."""
 
     init_torso_qpos: list[FiniteFloat] | None = None
     """Torso joint positions robosuite sets at each reset (robosuite's init_torso_qpos), or null."""
