@@ -129,3 +129,30 @@ def test_g1_with_its_shipped_motors_has_the_armature_and_effort_of_mjlab_g1(join
     (record,) = [r for r in robot.actuator_table if r.joint == joint]
     limit = dict(record.derivations)["forcerange"].value
     assert limit == effort
+
+
+# LeRobot's SO-101 assembly guide (https://huggingface.co/docs/lerobot/so101): "The follower arm uses 6x
+# STS3215 motors with 1/345 gearing." MuJoCo Menagerie's so_arm100.xml: armature 0.1, frictionloss 0.1.
+SO101_JOINTS = ("shoulder_pan", "shoulder_lift", "elbow_flex", "wrist_flex", "wrist_roll", "gripper")
+SO101_GEAR_RATIO = 345
+SO101_ARMATURE = SO101_FRICTIONLOSS = 0.1
+
+
+@NEEDS_URDFS
+def test_so101_names_the_sts3215_on_every_joint_its_stall_torque_the_servos_force_limit() -> None:
+    robot = robot_class("SO101")(idn=0)
+    motor = MOTORS.lookup("FeetechSTS3215").spec
+    assert motor.gear_ratio == SO101_GEAR_RATIO and motor.ratings_at == "output"
+    assert motor.peak_torque is None and motor.stall_torque is not None
+    model = robot.get_model()
+    for joint in SO101_JOINTS:
+        (record,) = [r for r in robot.actuator_table if r.joint == joint]
+        assert (record.section, record.type) == ("motors", "position")
+        assert record.values["forcerange"][1] == "motor FeetechSTS3215"
+        actuator = model.actuator(robot.naming_prefix + joint)
+        # the spec's own gearbox: the output's stall torque is the joint's
+        assert actuator.forcerange.tolist() == pytest.approx(
+            [-motor.stall_torque, motor.stall_torque], rel=1e-12
+        )
+        compiled = model.joint(robot.naming_prefix + joint)
+        assert (compiled.armature[0], compiled.frictionloss[0]) == (SO101_ARMATURE, SO101_FRICTIONLOSS)
