@@ -313,7 +313,9 @@ def _new(parser: argparse.ArgumentParser) -> None:
         help="spec file to write (default: <spec name in snake case>.yaml here)",
     )
     parser.add_argument(
-        "--kind", choices=("robot", "gripper"), help="a robot arm or a hand (default: guessed from the names)"
+        "--kind",
+        choices=("robot", "gripper", "base"),
+        help="a robot, a hand, or a mobile base (default: guessed from the names and the wheels)",
     )
     parser.add_argument("--force", action="store_true", help="replace SPEC if it exists")
     parser.add_argument(

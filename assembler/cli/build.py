@@ -21,23 +21,30 @@ from assembler.errors import AssemblerError
 from assembler.files.cache_location import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.files.paths import display_path
 from assembler.gpu.put_model_check import check_with_mujoco_warp
-from assembler.registry.instances import create_gripper
-from assembler.registry.lookup import REGISTERED_GRIPPERS, REGISTERED_ROBOTS
+from assembler.models import PartModel
+from assembler.registry.instances import create_base, create_gripper
+from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 
-def _gripper_alone(args: argparse.Namespace) -> bool:
-    """Write the MJCF of a gripper spec built alone (``assembler build hand.yaml``), if ``args.robot``
-    names one and no robot; return whether it did."""
+def _part_alone(args: argparse.Namespace) -> bool:
+    """Write the MJCF of a gripper or base spec built alone (``assembler build hand.yaml``), if
+    ``args.robot`` names one and no robot; return whether it did."""
     name = robot_name(args.robot)
-    if name in REGISTERED_ROBOTS or name not in REGISTERED_GRIPPERS:
+    if name in REGISTERED_ROBOTS:
         return False
-    _, spec = create_gripper(name, idn=args.idn).compile_alone_spec()
+    if name in REGISTERED_GRIPPERS:
+        part: PartModel = create_gripper(name, idn=args.idn)
+    elif name in REGISTERED_BASES:
+        part = create_base(name, idn=args.idn)
+    else:
+        return False
+    _, spec = part.compile_alone_spec()
     write_xml(args, spec.to_xml(), name)
     return True
 
 
 def run_build(args: argparse.Namespace) -> int:
-    if _gripper_alone(args):
+    if _part_alone(args):
         return 0
     robot = assembled(args)
     xml = robot.get_xml(cache=use_cache(args))  # compiled first: a robot that does not compile writes nothing

@@ -26,7 +26,7 @@ from assembler.files import menagerie
 from assembler.files.paths import display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
-from assembler.importers import write_new_spec
+from assembler.importers import NewSpec, write_new_spec
 from assembler.importers.checking import build_problems
 from assembler.importers.pack import importable, write_pack
 from assembler.importers.packages import environment, found_packages
@@ -63,9 +63,10 @@ def run_new(args: argparse.Namespace) -> int:
     written, target = write_new_spec(model_file, output, args.kind, args.force, args.strict)
     # A package the user has still to declare is found for the check, as it will be once declared.
     pending = [package for package in written.packages if package.declared != "beside the spec"]
+    jaw = written.jaw_path(target)
     with found_packages(pending):
-        problems = build_problems(target, written.kind)
-    print(f"wrote {display_path(target)}: {written.kind} {written.name}", end="")
+        problems = build_problems(target, written.kind, jaw)
+    print(f"wrote {display_path(target)}{_and_jaw(jaw)}: {_what(written)}", end="")
     if len(pending) < len(written.packages):
         print(f" and {display_path(target.parent / MARKER)}", end="")
     if not _built_as_written(problems, " once the packages below are found" if pending else ""):
@@ -75,6 +76,16 @@ def run_new(args: argparse.Namespace) -> int:
     for name, value in environment(pending).items():
         print(f"  export {name}={value}")
     return 0
+
+
+def _and_jaw(jaw: Path | None) -> str:
+    return "" if jaw is None else f" and {display_path(jaw)}"
+
+
+def _what(written: NewSpec) -> str:
+    """``robot Pincher with its jaw PincherJaw``: the kind and name of what ``new`` wrote."""
+    jaw = "" if written.jaw is None else f" with its jaw {written.jaw.name}"
+    return f"{written.kind} {written.name}{jaw}"
 
 
 def _built_as_written(problems: list[str], found: str = "") -> bool:
@@ -97,10 +108,11 @@ def _pack(args: argparse.Namespace, model_file: Path) -> int:
         )
     pack = Path(args.pack)
     written = write_pack(model_file, pack, args.kind, args.force, args.strict)
+    jaw = written.spec.jaw_path(written.spec_path)
     with importable(pack.resolve()):  # the pack's package:// names resolve as once it is installed
-        problems = build_problems(written.spec_path, written.spec.kind)
+        problems = build_problems(written.spec_path, written.spec.kind, jaw)
     print(
-        f"wrote {display_path(written.spec_path)}: {written.spec.kind} {written.spec.name}, and "
+        f"wrote {display_path(written.spec_path)}{_and_jaw(jaw)}: {_what(written.spec)}, and "
         f"{written.copied} vendor files under {display_path(pack / written.package / 'assets')}",
         end="",
     )

@@ -24,6 +24,7 @@ from assembler.files.writing import write_atomically
 from assembler.importers.decisions import robot_entries
 from assembler.importers.entries import Entry, spec_text
 from assembler.importers.hands import gripper_entries
+from assembler.importers.jaws import jaw_entries, jaw_of
 from assembler.importers.legged import legged_entries
 from assembler.importers.naming import camel_case, free_name, name_source
 from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside
@@ -64,6 +65,13 @@ class NewSpec:
     kind: Kind
     packages: tuple[BesidePackage, ...] = ()
     """ROS packages the URDF names that only a folder beside it holds, and what the user adds."""
+    jaw: NewSpec | None = None
+    """The gripper spec of the jaw cut from an arm's file (:mod:`~assembler.importers.jaws`), written
+    beside the arm's spec (:meth:`jaw_path`)."""
+
+    def jaw_path(self, spec_path: Path) -> Path | None:
+        """Where the jaw's spec goes when the arm's goes to ``spec_path``: beside it, named after it."""
+        return None if self.jaw is None else spec_path.with_name(snake_case(self.jaw.name) + ".yaml")
 
 
 def _kind(file: ModelFile) -> tuple[Kind, str]:
@@ -154,16 +162,30 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
         _package_notes(_file_entry(file, spec_path), packages),
         *([scene_entry(cut)] if cut is not None else []),
     ]
+    jaw = None
     if chosen == "gripper":
         entries += gripper_entries(file, tree)
     elif chosen == "base":
         entries += base_entries(file, tree)
+    elif tree.limbs is not None:
+        entries += legged_entries(file, tree)
     else:
-        entries += legged_entries(file, tree) if tree.limbs is not None else robot_entries(file, tree)
+        jaw = jaw_of(file.model, tree, free_name(f"{name}Jaw", {*taken, name}, "Gripper"))
+        entries += robot_entries(file, tree, jaw)
     if chosen == "robot" and kind is None:
         what = "a robot with feet" if tree.limbs is not None else "a robot arm"
         entries[0].guess(f"{what}: {why}; a hand: assembler new --kind gripper")
-    return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages))
+    jaw_spec = None
+    if jaw is not None:
+        jaw_fields = [
+            Entry("kind", "gripper").guess(f"the jaw of {name}'s file, cut from the arm"),
+            Entry("name", jaw.name).guess(f"{name}'s jaw; the registry and class name, yours to choose"),
+            Entry("description", f"The jaw of {source}, from {Path(file.reference).name}."),
+            _file_entry(file, spec_path),
+            *jaw_entries(file, jaw, tree),
+        ]
+        jaw_spec = NewSpec(spec_text(_header(file), jaw_fields), jaw.name, "gripper")
+    return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages), jaw_spec)
 
 
 def snake_case(name: str) -> str:
@@ -190,7 +212,20 @@ def write_new_spec(
         raise AssemblerError(
             f"{display_path(marker)}: exists; add what new would write to it: {toml.splitlines()[-1]}"
         )
-    write_atomically(target, written.text)
+    jaw_target = written.jaw_path(target)
+    if jaw_target is not None and os.path.lexists(jaw_target) and not force:
+        raise AssemblerError(
+            f"{display_path(jaw_target)}: exists (the spec of {written.name}'s jaw goes there); keep it, or "
+            "give --force to replace it"
+        )
+    if jaw_target is not None and written.jaw is not None:
+        write_atomically(jaw_target, written.jaw.text)
+    try:
+        write_atomically(target, written.text)
+    except BaseException:
+        if jaw_target is not None:  # no jaw spec without the arm's spec naming it
+            jaw_target.unlink(missing_ok=True)
+        raise
     if toml is not None:
         write_atomically(marker, toml)
     return written, target

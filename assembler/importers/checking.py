@@ -11,9 +11,12 @@ from assembler.registry.catalog import register_specs
 from assembler.registry.instances import assemble, create_base, create_gripper
 
 
-def build_problems(spec_path: Path, kind: str) -> list[str]:
-    """The lines saying why the spec at ``spec_path`` does not build, or none when it builds."""
+def build_problems(spec_path: Path, kind: str, jaw_path: Path | None = None) -> list[str]:
+    """The lines saying why the spec at ``spec_path`` (with the spec of its jaw at ``jaw_path``, if any)
+    does not build, or none when it builds."""
     try:
+        if jaw_path is not None:  # first: the arm's spec names it
+            register_specs(jaw_path)
         (registered,) = register_specs(spec_path)
         if kind == "gripper":
             create_gripper(registered.__name__).compile_alone()

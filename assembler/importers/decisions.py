@@ -4,6 +4,8 @@ and what the file cannot tell marked with the field to set."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import mujoco
 
 from assembler.importers.entries import Entry
@@ -120,8 +122,11 @@ def _fixed_fingers(model: mujoco.MjModel, eef: str) -> list[str]:
     return names
 
 
-def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
-    """The fields of an arm's spec after its name and file."""
+def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[Entry]:
+    """The fields of an arm's spec after its name and file; ``jaw``: the file's hand, cut from the arm
+    and made the gripper of that name (:mod:`~assembler.importers.jaws`)."""
+    if jaw is not None:
+        return _arm_without_jaw(file, tree, jaw)
     entries = balance_entry(file)
     entries.append(
         Entry("morphology", "manipulator").guess(
@@ -188,6 +193,59 @@ def robot_entries(file: ModelFile, tree: Tree) -> list[Entry]:
         )
     )
     actuators = actuator_entry(file, tree.joints)
+    entries += [actuators] if actuators else []
+    entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
+    return entries
+
+
+@dataclass(frozen=True)
+class Jaw:
+    """The hand of an arm's file that becomes a gripper spec of its own (:mod:`~assembler.importers.jaws`)."""
+
+    name: str
+    """The gripper spec's name."""
+    hand: str
+    """The body cut from the arm, the gripper's root: where the fingers branch off."""
+    mount: str
+    """The hand's parent, the arm's end effector the gripper is mounted on."""
+    joints: tuple[str, ...]
+    """The jaw's joints: every joint below the hand."""
+
+
+def _arm_without_jaw(file: ModelFile, tree: Tree, jaw: Jaw) -> list[Entry]:
+    """An arm's fields when its file's jaw is a gripper spec of its own."""
+    arm_joints = tuple(name for name in tree.joints if name not in jaw.joints)
+    entries = [
+        *balance_entry(file),
+        Entry("morphology", "manipulator").guess(f"one arm of {len(tree.arm)} joints"),
+        Entry("eef_bodies", {"right": jaw.mount}).guess(
+            f"the body the hand {jaw.hand} hangs from; the hand is the gripper mounted here"
+        ),
+        Entry("remove_bodies", [jaw.hand]).guess(
+            f"the hand and its jaw ({_short(jaw.joints, 3)}) are cut from the arm and made the gripper "
+            f"{jaw.name}, whose spec (beside this one) takes them from the same file, so robosuite gives "
+            "the jaw an action"
+        ),
+    ]
+    groups: dict[str, list[str]] = {"right": list(tree.arm)}
+    for part in ("base", "torso", "head"):
+        if getattr(tree, part):
+            groups[part] = list(getattr(tree, part))
+    entries.append(Entry("joint_groups", groups).guess("the arm is the chain of joints to the hand"))
+    entries.append(
+        Entry("default_grippers", {"right": jaw.name}).guess(
+            "the file's own jaw; any registered gripper (assembler list grippers) in its place"
+        )
+    )
+    pose = init_qpos_entry(file, arm_joints)
+    entries += [pose] if pose else []
+    entries.append(
+        Entry("joint_defaults", dict(NO_RULES)).guess(
+            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
+            "rules (0.1, 0.1 and 5/(i+1) where the file sets none)"
+        )
+    )
+    actuators = actuator_entry(file, arm_joints)
     entries += [actuators] if actuators else []
     entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
     return entries

@@ -152,5 +152,8 @@ def write_pack(
     target = pack / package / "specs" / f"{snake_case(written.name)}.yaml"
     if target.exists() and not force:
         raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")
+    jaw_target = written.jaw_path(target)
+    if jaw_target is not None and written.jaw is not None:
+        write_atomically(jaw_target, written.jaw.text)
     write_atomically(target, written.text)
     return WrittenPack(written, target, package, len(copies), tuple(licences), written_pyproject)

@@ -42,6 +42,7 @@ FREE = int(mujoco.mjtJoint.mjJNT_FREE)
 """As an integer: on MuJoCo 4 enums compare unreliably with the items of model arrays."""
 
 HINGE = int(mujoco.mjtJoint.mjJNT_HINGE)
+SLIDE = int(mujoco.mjtJoint.mjJNT_SLIDE)
 
 
 @dataclass(frozen=True)

@@ -331,6 +331,7 @@ def subtree_source(source: MjcfSource, body: str) -> MjcfSource:
         raise MjcfError(f"{display_path(source.path)}: no body named '{body}'; its bodies: {names}")
     part = mujoco.MjSpec()
     part.compiler.degree = source.pristine.compiler.degree
+    part.option, part.visual = copy.option, copy.visual  # the file's: no conflict for attach to warn of
     part.worldbody.add_frame().attach_body(top, _SUBTREE_PREFIX, "")
     with mujoco_warnings.collected():
         text = to_xml(part)  # every digit: MuJoCo's writer keeps six (ranges, masses, inertias)

@@ -23,6 +23,10 @@ class Corpus:
     def __init__(self, folder: Path) -> None:
         self.folder = folder
         self.before: dict[str, str | None] = {}
+        self.environments: dict[str, dict[str, str]] = {}
+        """Case -> the variables ``new`` told the user to export for it."""
+        self.jaws: dict[str, Path] = {}
+        """Case -> the spec of the jaw ``new`` cut from the arm's file, written beside the arm's."""
 
     def model_file(self, case: Case) -> Path:
         path = case.path()
@@ -32,20 +36,41 @@ class Corpus:
 
     def spec(self, case: Case) -> Path:
         """The spec ``assembler new`` writes for the case, as written (no field added)."""
-        target = self.folder / f"{case.id}.yaml"
+        target = self.folder / case.id / f"{case.id}.yaml"  # a folder each: a jaw's spec goes beside
         if not target.exists():
+            target.parent.mkdir(exist_ok=True)
             written, _ = write_new_spec(self.model_file(case), target)
-            for variable, value in environment(written.packages).items():  # new's "to do: export ..."
-                self.before.setdefault(variable, os.environ.get(variable))
-                os.environ[variable] = value
-            if case.name is not None:  # the one field a user changes here (see Case.name)
-                text = target.read_text()
-                target.write_text(re.sub(r"^name: \S+", f"name: {case.name}", text, count=1, flags=re.M))
+            self.environments[case.id] = environment(written.packages)  # new's "to do: export ..."
+            self._export(case)
+            jaw = written.jaw_path(target)
+            if case.name is not None:  # the one field a user changes here (see Case.name), and its jaw's
+                names = {written.name: case.name}
+                if written.jaw is not None:
+                    names[written.jaw.name] = f"{case.name}Jaw"
+                for path in (target, jaw):
+                    if path is not None:
+                        text = path.read_text()
+                        for old, new in names.items():
+                            text = re.sub(rf"\b{old}\b", new, text)
+                        path.write_text(text)
+            if jaw is not None:
+                self.jaws[case.id] = jaw
         return target
 
+    def _export(self, case: Case) -> None:
+        """Set what ``new`` told the user to export for ``case``, the values before kept once."""
+        for variable, value in self.environments.get(case.id, {}).items():
+            self.before.setdefault(variable, os.environ.get(variable))
+            os.environ[variable] = value
+
     def name(self, case: Case) -> str:
-        """The case's spec registered (again: each test starts from the shipped registry), by name."""
-        (registered,) = register_specs(self.spec(case))
+        """The case's spec registered (again: each test starts from the shipped registry), by name; the
+        spec of the jaw ``new`` cut from the arm's file first, which the arm's spec names."""
+        spec = self.spec(case)
+        self._export(case)  # each case's own: two cases' packages may share a name (pybullet's 'meshes')
+        if case.id in self.jaws:
+            register_specs(self.jaws[case.id])
+        (registered,) = register_specs(spec)
         return registered.__name__
 
 

@@ -97,6 +97,9 @@ def test_a_cart_with_wheels_and_no_arm_is_written_as_a_mobile_base_an_arm_stands
     wheels = [f"{side}_wheel_joint" for side, _, _ in WHEELS]
     assert fields["joint_groups"] == {"base": wheels}
     assert [(a["match"], a["type"]) for a in fields["actuators"]] == [(w, "velocity") for w in wheels]
+    alone = spec.with_name("cart.xml")
+    assert main(["build", str(spec), "-o", str(alone)]) == 0  # a base spec builds alone, as a gripper's does
+    assert mujoco.MjModel.from_xml_path(str(alone)).nu == len(WHEELS)
     (registered,) = register_specs(spec)
     robot = assembler.assemble("Sparrow7", base=registered.__name__)
     model = robot.get_model()
