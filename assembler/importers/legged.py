@@ -42,6 +42,26 @@ def _free_joint(file: ModelFile) -> list[Entry]:
     ]
 
 
+MJLAB_LIMIT_FACTOR = 0.9
+"""The share of each joint's range mjlab's limit terms allow, as mjlab's own Go1 and G1 configure it."""
+
+
+def _mjlab_entry(file: ModelFile) -> Entry:
+    """What mjlab's velocity task reads of a legged robot: an IMU, the feet (the spec's ``feet``), the
+    soft joint-limit factor (:mod:`assembler.mjlab` makes the sites and sensors from them)."""
+    model = file.model
+    root = next(b for b in range(1, model.nbody) if model.body_parentid[b] == 0)
+    return (
+        Entry("mjlab", {"imu_body": model.body(root).name, "soft_joint_pos_limit_factor": MJLAB_LIMIT_FACTOR})
+        .guess(
+            "what mjlab's tasks read: an IMU on the root body (its gyro, velocimeter and angular momentum "
+            f"sensors), the feet above with a contact sensor over them, {MJLAB_LIMIT_FACTOR} of each joint's "
+            "range allowed as mjlab's Go1 and G1 allow"
+        )
+        .decide("set imu_pos to where the robot's IMU sits in that body (metres)")
+    )
+
+
 def legged_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     """The fields of a legged robot's spec after its name and file."""
     limbs = tree.limbs
@@ -101,6 +121,7 @@ def legged_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     )
     actuators = actuator_entry(file, tree.joints)
     entries += [actuators] if actuators else []
+    entries.append(_mjlab_entry(file))
     if arms:
         entries.append(
             Entry("robosuite", {"enabled": False}).decide(

@@ -5,7 +5,8 @@
   ``imu_lin_vel`` (velocimeter) and ``root_angmom`` (the root's subtree angular momentum). mjlab scopes
   them under the entity (``robot/imu_lin_vel``), so they carry no robot prefix.
 - Each foot (``mjlab.feet``, else the spec's ``feet``) gets a site ``<foot body>_sole`` at its lowest
-  collision point at the home pose, for the task's foot terms, and the feet contact sensor
+  collision point at the home pose, for the task's foot terms, a name ``<foot body>_geom<i>`` for each
+  of its collision geoms that has none (a URDF's; mjlab selects geoms by name), and the feet contact sensor
   (``feet_ground_contact``: the feet's subtrees against the terrain, as mjlab's G1 task builds it).
 - A floating robot spawns with its lowest collision point on the floor (z = 0) at the home pose, and its
   root body is raised or lowered so that it also stands on the floor at ``qpos0`` (all joints at 0), as
@@ -70,6 +71,9 @@ class TaskParts:
         )
         for body, site, pos in self.feet:
             spec.body(body).add_site(name=site, pos=list(pos), group=5)
+            for place, geom in enumerate(spec.body(body).geoms):  # in the compiled model's order
+                if not geom.name and f"{body}_geom{place}" in self.foot_geoms:
+                    geom.name = f"{body}_geom{place}"
 
     def feet_sensor(self, entity: str = "robot") -> ContactSensorCfg:
         """The feet contact sensor mjlab's velocity task reads (``feet_ground_contact``), as its G1's."""
@@ -84,6 +88,13 @@ class TaskParts:
             num_slots=1,
             track_air_time=True,
         )
+
+
+def foot_geom_name(model: mujoco.MjModel, geom: int) -> str:
+    """The name a foot's unnamed geom gets in mjlab's copy of the robot (a URDF's collision geoms have
+    none; mjlab selects geoms by name): its body's name and its place among that body's geoms."""
+    body = int(model.geom_bodyid[geom])
+    return f"{model.body(body).name}_geom{geom - int(model.body_geomadr[body])}"
 
 
 def _body(model: mujoco.MjModel, prefix: str, name: str, field: str) -> str:
@@ -162,12 +173,7 @@ def task_parts(robot: RobotModel, model: mujoco.MjModel) -> TaskParts:
         if not own:
             problems.append(f"mjlab.feet: {body} has no collision geom to stand on")
             continue
-        unnamed = [g for g in own if not model.geom(g).name]
-        if unnamed:
-            problems.append(
-                f"mjlab.feet: {body} has {len(unnamed)} unnamed collision geom(s); name them in the MJCF"
-            )
-        geoms += [model.geom(g).name for g in own]
+        geoms += [model.geom(g).name or foot_geom_name(model, g) for g in own]
         low = min(own, key=lambda g: geom_lowest(model, data, g))
         point = data.geom_xpos[low].copy()
         point[2] = geom_lowest(model, data, low)

@@ -27,7 +27,9 @@ def _leg(name: str, x: float, y: float) -> str:
         <joint name="{name}_hip_joint" axis="1 0 0" range="-1 1"/>
         <body name="{name}_thigh" pos="0 0 -0.2">{BOX}
           <joint name="{name}_knee_joint" axis="0 1 0" range="-2 0"/>
-          <body name="{name}_foot" pos="0 0 -0.2"><inertial pos="0 0 0" mass="0.1" diaginertia="1e-4 1e-4 1e-4"/></body>
+          <body name="{name}_foot" pos="0 0 -0.2"><inertial pos="0 0 0" mass="0.1" diaginertia="1e-4 1e-4 1e-4"/>
+            <geom type="sphere" size="0.02"/>
+          </body>
         </body>
       </body>"""
 
@@ -86,6 +88,7 @@ def test_a_quadruped_is_written_legged_with_its_feet_and_no_arm_or_gripper(
         "legs": [f"{leg}_{joint}_joint" for leg in ("FL", "FR", "RL", "RR") for joint in ("hip", "knee")]
     }
     assert not {"eef_bodies", "default_grippers", "robosuite"} & set(fields)
+    assert fields["mjlab"] == {"imu_body": "trunk", "soft_joint_pos_limit_factor": 0.9}  # what mjlab reads
     text = spec.read_text()
     assert "# decide: a legged robot stands on a floor" in text
     (cls,) = register_specs(spec)

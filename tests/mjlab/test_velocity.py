@@ -22,12 +22,15 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
     from mjlab.envs import ManagerBasedRlEnv
     from mjlab.tasks.velocity.velocity_env_cfg import make_velocity_env_cfg
 
+    from assembler.cli import main
     from assembler.errors import AssemblerError
     from assembler.mjlab import entity_cfg, for_mjlab
     from assembler.mjlab.task_parts import geom_lowest
     from assembler.mjlab.velocity import use_robot
+    from assembler.registry.catalog import register_specs
     from assembler.registry.instances import assemble
     from assembler.urdf.packages import package_folders
+    from tests.importers.test_limbs import QUADRUPED
 
 DOCS = Path(__file__).parents[2] / "docs" / "gpu.md"
 
@@ -76,6 +79,29 @@ def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_els
     )
     assert env.common_step_counter == 50
     assert torch.isfinite(reward).all() and torch.isfinite(env.scene["robot"].data.joint_pos).all()
+    env.close()
+
+
+def test_a_quadruped_new_wrote_runs_mjlabs_velocity_task_as_written(tmp_path: Path) -> None:
+    model = tmp_path / "dog.xml"
+    model.write_text(QUADRUPED)
+    spec = tmp_path / "dog.yaml"
+    assert main(["new", str(model), "-o", str(spec)]) == 0  # its mjlab: block proposed, nothing added
+    (robot,) = register_specs(spec)
+    cfg = make_velocity_env_cfg()
+    use_robot(cfg, robot.__name__)
+    assert cfg.scene.entities["robot"].articulation.soft_joint_pos_limit_factor == 0.9
+    named = cfg.scene.entities["robot"].spec_fn().compile()  # mjlab selects geoms by name: feet's get one
+    assert named.geom("robot0_FL_foot_geom0").type == mujoco.mjtGeom.mjGEOM_SPHERE
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # mjlab's and warp's notes about CPU-only runs
+        env = ManagerBasedRlEnv(cfg, device="cpu")
+        env.reset()
+        actions = torch.zeros((env.num_envs, env.action_manager.total_action_dim))
+        for _ in range(50):
+            _, reward, _, _, _ = env.step(actions)
+    assert {"robot/imu_lin_vel", "robot/imu_ang_vel", "feet_ground_contact"} <= set(env.scene.sensors)
+    assert env.common_step_counter == 50 and torch.isfinite(reward).all()
     env.close()
 
 
