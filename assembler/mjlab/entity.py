@@ -21,7 +21,14 @@ from collections.abc import Callable
 from typing import Literal
 
 import mujoco
-from mjlab.actuator import BuiltinMotorActuatorCfg, BuiltinPositionActuatorCfg, XmlActuatorCfg
+from mjlab.actuator import (
+    BuiltinDcMotorActuatorCfg,
+    BuiltinMotorActuatorCfg,
+    BuiltinPositionActuatorCfg,
+    DcMotorInputMode,
+    DcMotorPhysicalParams,
+    XmlActuatorCfg,
+)
 from mjlab.actuator.actuator import ActuatorCfg
 from mjlab.entity import EntityArticulationInfoCfg, EntityCfg
 from mjlab.sensor import ContactSensorCfg
@@ -72,9 +79,24 @@ def _force_limit(model: mujoco.MjModel, actuator: int) -> float | None:
     return float(max(abs(v) for v in model.actuator_forcerange[actuator]))
 
 
+def _voltage_motor(model: mujoco.MjModel, actuator: int) -> DcMotorPhysicalParams | None:
+    """The motor of a DC motor taking volts as ``control: voltage`` makes it (MuJoCo's ``dcmotor`` with
+    its motor constant and resistance and nothing else: gainprm [R, K], no saturation, controller,
+    inductance or friction), or None."""
+    dcmotor = getattr(mujoco.mjtGain, "mjGAIN_DCMOTOR", None)
+    if dcmotor is None or int(model.actuator_gaintype[actuator]) != int(dcmotor):
+        return None
+    gain = model.actuator_gainprm[actuator]
+    if gain[2:].any() or model.actuator_biasprm[actuator].any() or model.actuator_dynprm[actuator].any():
+        return None
+    resistance, constant = float(gain[0]), float(gain[1])
+    return DcMotorPhysicalParams(kt=constant, ke=constant, resistance=resistance)
+
+
 def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
-    """mjlab built-in configs for the model's actuators: position servos (kp, kv, force limit) and
-    motors (gear, force limit), one per actuated joint; any other kind is refused, by name."""
+    """mjlab built-in configs for the model's actuators: position servos (kp, kv, force limit), motors
+    (gear, force limit) and DC motors taking volts (motor constant, resistance, gear: mjlab's own
+    ``dcmotor`` in voltage mode), one per actuated joint; any other kind is refused, by name."""
     configs: list[ActuatorCfg] = []
     problems: list[str] = []
     fixed, affine = int(mujoco.mjtGain.mjGAIN_FIXED), int(mujoco.mjtBias.mjBIAS_AFFINE)
@@ -107,10 +129,20 @@ def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
             configs.append(
                 BuiltinMotorActuatorCfg(target_names_expr=(_exact(joint),), effort_limit=limit, gear=gear)
             )
+        elif (motor := _voltage_motor(model, actuator)) is not None:
+            configs.append(
+                BuiltinDcMotorActuatorCfg(
+                    target_names_expr=(_exact(joint),),
+                    motor_params=motor,
+                    mode=DcMotorInputMode.VOLTAGE,
+                    gear=gear,
+                    effort_limit=limit,
+                )
+            )
         else:
             problems.append(
-                f"{name}: neither a position servo nor a motor (gain {gaintype}, bias {biastype}); "
-                "use actuators='xml' to keep it as it is"
+                f"{name}: neither a position servo, a motor nor a DC motor taking volts (gain {gaintype}, "
+                f"bias {biastype}); use actuators='xml' to keep it as it is"
             )
     if problems:
         raise AssemblerError([Problem(p) for p in problems])

@@ -19,13 +19,20 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
     warnings.simplefilter("ignore", DeprecationWarning)
     pytest.importorskip("mjlab", reason='mjlab is not installed (pip install -e ".[mjlab]"; CI: .ci/mjlab)')
     torch = pytest.importorskip("torch")
-    from mjlab.actuator import BuiltinPositionActuatorCfg, XmlActuatorCfg
+    from mjlab.actuator import (
+        BuiltinDcMotorActuatorCfg,
+        BuiltinPositionActuatorCfg,
+        DcMotorInputMode,
+        XmlActuatorCfg,
+    )
+    from mjlab.entity.entity import Entity
     from mjlab.envs import ManagerBasedRlEnv, ManagerBasedRlEnvCfg
     from mjlab.envs.mdp.actions import JointPositionActionCfg
     from mjlab.scene import SceneCfg
 
     from assembler.errors import AssemblerError
     from assembler.mjlab import entity_cfg, home_joint_positions, mapped_actuators
+    from assembler.registry.catalog import register_specs
     from assembler.registry.instances import assemble
     from assembler.urdf.packages import package_folders
 
@@ -93,9 +100,35 @@ def test_an_actuator_mjlab_has_no_builtin_for_is_named_with_what_to_do() -> None
         '<actuator><velocity name="spin" joint="j" kv="3"/></actuator></mujoco>'
     )
     with pytest.raises(
-        AssemblerError, match=r"spin: neither a position servo nor a motor .*use actuators='xml'"
+        AssemblerError, match=r"spin: neither a position servo, a motor nor a DC motor .*use actuators='xml'"
     ):
         mapped_actuators(model)
+
+
+VOLTAGE_SPEC = """\
+name: VoltageSparrow
+extends: Sparrow7
+motors:
+  - {match: joint7, motor: MaxonECmax22, gear_ratio: 20, efficiency: 0.8, control: voltage}
+"""
+"""Sparrow7 with a maxon motor taking volts on joint 7 (a 20:1 gearbox, 80% efficient)."""
+
+
+def test_a_dc_motor_taking_volts_is_mjlabs_own_dcmotor_with_our_actuators_fields(tmp_path: Path) -> None:
+    spec = tmp_path / "voltage_sparrow.yaml"
+    spec.write_text(VOLTAGE_SPEC)
+    register_specs(spec)
+    robot = assemble("VoltageSparrow")
+    ours = robot.get_model()
+    cfg = entity_cfg(robot, actuators="builtin")
+    (motor,) = [c for c in cfg.articulation.actuators if isinstance(c, BuiltinDcMotorActuatorCfg)]
+    assert motor.target_names_expr == ("robot0_joint7",) and motor.mode == DcMotorInputMode.VOLTAGE
+    theirs = Entity(cfg).spec.compile()  # mjlab's entity, its actuators made by mjlab
+    mine, its = ours.actuator("robot0_joint7").id, theirs.actuator("robot0_joint7").id
+    for field in ("gaintype", "biastype", "dyntype", "gainprm", "biasprm", "dynprm", "gear"):
+        np.testing.assert_array_equal(
+            getattr(theirs, f"actuator_{field}")[its], getattr(ours, f"actuator_{field}")[mine], err_msg=field
+        )
 
 
 def test_the_spec_mjlab_gets_is_a_fresh_copy_without_our_keyframe() -> None:
