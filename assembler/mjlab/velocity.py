@@ -5,19 +5,42 @@ the names it reads of it empty ("Set per-robot"), and its Go1 and G1 configs fil
 same slots for a spec robot, and nothing else of the task: the entity (:func:`entity_cfg`), the feet
 contact sensor, the root body (terrain scan frame, base COM, upright and body angular-velocity terms,
 viewer), the feet's sites (foot height scan, clearance and slip terms) and collision geoms (friction
-randomization), and the posture reward's per-joint spreads.
+randomization), the posture reward's per-joint spreads, and the joint-position action's scale per joint
+(mjlab's rule for its robots: 0.25 × a servo's force limit / its stiffness).
 """
 
 from __future__ import annotations
 
 import re
 
+import mujoco
 from mjlab.envs import ManagerBasedRlEnvCfg
+from mjlab.envs.mdp.actions import JointPositionActionCfg
 from mjlab.sensor import ObjRef, RayCastSensorCfg, RingPatternCfg, TerrainHeightSensorCfg
 
 from assembler.mjlab.entity import entity_cfg, for_mjlab
 from assembler.mjlab.task_parts import task_parts
 from assembler.models import RobotModel
+
+ACTION_SCALE = 0.25
+"""mjlab's G1, Go1 and YAM configs scale each joint's position action to 0.25 × its servo's effort limit
+over its stiffness: an action of 1 asks a quarter of the joint's torque limit."""
+
+
+def action_scale(model: mujoco.MjModel) -> dict[str, float] | None:
+    """Per actuated joint (its exact name as a pattern), :data:`ACTION_SCALE` × force limit / kp; None
+    unless every actuator is a position servo with a force limit (the rule needs both)."""
+    scale: dict[str, float] = {}
+    for actuator in range(model.nu):
+        gain, bias = model.actuator_gainprm[actuator], model.actuator_biasprm[actuator]
+        servo = bias[1] == -gain[0] and gain[0] > 0
+        if not servo or not model.actuator_forcelimited[actuator]:
+            return None
+        joint = model.joint(int(model.actuator_trnid[actuator, 0])).name
+        limit = float(max(abs(v) for v in model.actuator_forcerange[actuator]))
+        scale[re.escape(joint)] = ACTION_SCALE * limit / float(gain[0])
+    return scale
+
 
 POSTURE_STD = {"std_standing": 0.05, "std_walking": 0.3, "std_running": 0.5}
 """The posture reward's spread for every joint: mjlab's G1 standing value (0.05 for all joints), and its
@@ -30,7 +53,11 @@ def use_robot(
     """mjlab's velocity task config ``cfg`` (``make_velocity_env_cfg()``) with ``robot`` as its entity
     ``entity`` and every per-robot slot filled from the robot's spec; changed in place and returned."""
     model = for_mjlab(robot) if isinstance(robot, str) else robot
-    parts = task_parts(model, model.get_model())
+    compiled = model.get_model()
+    parts = task_parts(model, compiled)
+    action, scale = cfg.actions.get("joint_pos"), action_scale(compiled)
+    if isinstance(action, JointPositionActionCfg) and scale is not None:
+        action.scale = scale
     cfg.scene.entities = {**cfg.scene.entities, entity: entity_cfg(model)}
     sites = tuple(re.escape(site) for _, site, _ in parts.feet)
     root = re.escape(parts.root)

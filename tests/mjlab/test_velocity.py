@@ -79,6 +79,13 @@ def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_els
     )
     assert env.common_step_counter == 50
     assert torch.isfinite(reward).all() and torch.isfinite(env.scene["robot"].data.joint_pos).all()
+    # mjlab's rule for its own G1: an action of 1 asks each servo for a quarter of its torque limit
+    model, scale = env.sim.mj_model, cfg.actions["joint_pos"].scale
+    assert isinstance(scale, dict) and len(scale) == model.nu == 29
+    for actuator in range(model.nu):
+        joint = model.joint(int(model.actuator_trnid[actuator, 0])).name.removeprefix("robot/")
+        asked = model.actuator_gainprm[actuator, 0] * scale[re.escape(joint)]
+        assert asked == pytest.approx(0.25 * model.actuator_forcerange[actuator, 1], rel=1e-12), joint
     env.close()
 
 
