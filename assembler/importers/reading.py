@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -20,9 +21,9 @@ from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, allowing, display_path, is_file, package_root
 from assembler.files.regular import not_regular
 from assembler.mjcf.source import MjcfSource, load_mjcf
+from assembler.mjcf.xml_guard import NOT_FINITE
 from assembler.spec.schema.fixes import MjcfFix
 from assembler.urdf import load_urdf
-from assembler.urdf.document import NOT_FINITE
 from assembler.urdf.packages import share_reference
 from assembler.urdf.postprocess import MUJOCO_IGNORES
 
@@ -134,9 +135,18 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = (), strict: bool = Fa
     if package is None and fmt == "urdf":  # a ROS package in a share/ tree (cmeel's example-robot-data)
         package = share_reference(path)
     reference = package or str(path)
-    with allowing([] if package else [path.parent]):
+    with allowing([] if package else [path.parent]), warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
         source, model, balanced = _read(path, reference, fmt, fixes, strict)
+    for warning in said:  # a number that is not finite is refused below: said once, there
+        if NOT_FINITE not in str(warning.message):
+            warnings.warn(warning.message, warning.category, stacklevel=2)
     changed = repairs(source) if strict else []
     if changed:
         raise MjcfError([Problem(f"{line}; {STRICT}") for line in changed])
+    not_finite = [note for note in source.notes if NOT_FINITE in note]
+    if not_finite:  # no home pose, servo or footprint can be read off a NaN
+        raise MjcfError(
+            [Problem(f"{line}; new reads a robot only from finite numbers") for line in not_finite]
+        )
     return ModelFile(path, fmt, reference, source, model, balanced)

@@ -23,6 +23,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import os
+import warnings
 import xml.etree.ElementTree as ET
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -31,7 +32,7 @@ from pathlib import Path
 import mujoco
 from pydantic import TypeAdapter
 
-from assembler.errors import MjcfError, Problem
+from assembler.errors import AssemblerWarning, MjcfError, Problem
 from assembler.files.inputs import note_inputs
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.files.regular import not_regular
@@ -46,6 +47,7 @@ from assembler.mjcf.xml_guard import (
     check_as_mujoco,
     check_mjcf,
     name_assets_after_files,
+    non_finite_values,
     original_lines,
     refusal_line,
     repaired_lines,
@@ -284,12 +286,21 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
     # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
     check_as_mujoco(_parse(path, fixes, on_disk)[1], spec, shown, lines)
     refuse_unattachable(spec, shown)
+    not_finite = [
+        line
+        for file in read
+        if file.suffix.lower() == ".xml"
+        for line in non_finite_values(file.read_bytes(), display_path(file), "the file")
+    ]
+    for line in not_finite:  # said once per version of the file, as MuJoCo's own warnings are
+        warnings.warn(line, AssemblerWarning, stacklevel=2)
     return MjcfSource(
         path=path,
         pristine=spec,
         globals_xml=_globals_xml(root),
         authored=tuple(authored_attributes(root, spec, included)),
         files=files,
+        notes=tuple(not_finite),
     )
 
 

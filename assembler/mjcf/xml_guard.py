@@ -85,6 +85,42 @@ LineMap = Callable[[int], "int | None"]
 """MuJoCo's line number -> the line in the file on disk (None: not in that file)."""
 
 
+NOT_FINITE = "not a finite number"
+"""The words of every line saying that a model file's number is NaN or infinite."""
+
+NON_FINITE_VALUE = re.compile(r"(?<![A-Za-z_])[-+]?(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
+
+TEXT_ATTRIBUTES = frozenset(
+    {
+        "name", "class", "childclass", "file", "filename", "content_type", "type", "link", "joint",
+        "joint1", "joint2", "body", "body1", "body2", "geom", "geom1", "geom2", "site", "site1", "site2",
+        "tendon", "actuator", "mesh", "material", "texture", "hfield", "skin", "target", "objtype",
+        "objname", "reftype", "refname", "prefix", "key", "plugin", "instance", "model", "mode",
+    }
+)  # fmt: skip
+"""Attributes of MJCF and URDF that hold names or words, never numbers (a body may be named ``inf``)."""
+
+
+def non_finite_values(data: bytes, shown: str, file: str) -> list[str]:
+    """A line per attribute of the model file (its bytes ``data``, shown as ``shown``; ``file``: what to
+    correct, e.g. "the URDF") whose value holds ``nan`` or ``inf``: MuJoCo keeps them (a NaN position
+    makes every step NaN, an infinite size a geom without bounds) and warns only that the file holds a
+    NaN somewhere, or nothing for an infinity."""
+    kept = (
+        "MuJoCo keeps it as written (a NaN position makes every step NaN, an infinite size a geom "
+        f"without bounds); correct {file}"
+    )
+    found = []
+    text = data.decode("utf-8", errors="replace")
+    for number, line in enumerate(text.splitlines(), start=1):
+        for tag, body in re.findall(r"<(\w+)([^<>]*)>", line):
+            for attribute, value in re.findall(r"([\w:]+)\s*=\s*[\"']([^\"']*)[\"']", body):
+                if attribute not in TEXT_ATTRIBUTES and NON_FINITE_VALUE.search(value):
+                    written = f'<{tag} {attribute}="{value}">'
+                    found.append(f"{shown}:{number}: {written} holds a value that is {NOT_FINITE}: {kept}")
+    return found
+
+
 class _Refused(Exception):
     """Raised inside an expat handler to stop the parse at once."""
 

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import math
 import os
-import re
 import xml.etree.ElementTree as ET
 from collections.abc import Collection
 from dataclasses import dataclass, field
@@ -26,6 +25,7 @@ from assembler.errors import MjcfError, Problem
 from assembler.files.paths import confine, display_path, is_file
 from assembler.files.regular import not_regular
 from assembler.mjcf.source import GLOBAL_SECTIONS
+from assembler.mjcf.xml_guard import non_finite_values
 from assembler.urdf.meshes import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
 from assembler.urdf.outline import outline
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
@@ -107,33 +107,6 @@ def _bad_size(visual: ET.Element) -> str | None:
             if any(not math.isfinite(v) or v <= 0 for v in values):
                 return f'<{shape.tag} {attribute}="{text}">'
     return None
-
-
-NOT_FINITE = "not a finite number"
-"""The words of every line saying that a URDF's number is NaN or infinite."""
-
-KEPT = (
-    "MuJoCo keeps it as written (a NaN position makes every step NaN, an infinite size a geom without "
-    "bounds); correct the URDF"
-)
-
-NON_FINITE_VALUE = re.compile(r"(?<![A-Za-z_])[-+]?(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
-
-
-def _non_finite(data: bytes, shown: str) -> list[str]:
-    """A line per attribute of the URDF whose value holds ``nan`` or ``inf``: MuJoCo's import keeps them
-    (a NaN position makes every step NaN, an infinite size a geom without bounds) and warns only that
-    the file holds a NaN somewhere."""
-    found = []
-    text = data.decode("utf-8", errors="replace")
-    for number, line in enumerate(text.splitlines(), start=1):
-        for tag, body in re.findall(r"<(\w+)([^<>]*)>", line):
-            for attribute, value in re.findall(r"([\w:]+)\s*=\s*[\"']([^\"']*)[\"']", body):
-                named = attribute in ("name", "filename", "link", "joint", "type")
-                if not named and NON_FINITE_VALUE.search(value):
-                    written = f'<{tag} {attribute}="{value}">'
-                    found.append(f"{shown}:{number}: {written} holds a value that is {NOT_FINITE}: {KEPT}")
-    return found
 
 
 def _discard_bad_visuals(root: ET.Element, lines: list[int], shown: str, document: UrdfDocument) -> None:
@@ -308,7 +281,7 @@ def read_urdf(path: Path, homes: Collection[Path], data: bytes) -> UrdfDocument:
         raise MjcfError(reader.problems)
     _joint_facts(root, reader.lines["joint"], document)
     _discard_bad_visuals(root, reader.lines["link/visual"], shown, document)
-    document.non_finite = _non_finite(data, shown)
+    document.non_finite = non_finite_values(data, shown, "the URDF")
     document.mujoco_element = extension
     document.ignored = [(tag, line) for tag, line in found.extension if tag not in EXTENSION_SECTIONS]
     document.text = ET.tostring(root, encoding="unicode")
