@@ -15,31 +15,22 @@ from assembler.cache import cache_disabled
 from assembler.cache.folder import LABELS
 from assembler.cache.folder import info as folder_info
 from assembler.cli.cached_build import build_flags, request_of, write_xml
-from assembler.cli.common import assembled, idle_override_warnings, robot_name, table, use_cache
+from assembler.cli.common import assembled, idle_override_warnings, part_alone, table, use_cache
 from assembler.compiler.service import clear, default_store
 from assembler.errors import AssemblerError
 from assembler.files.cache_location import DISABLE_VARIABLE, MAX_BYTES_VARIABLE, format_size, max_bytes
 from assembler.files.paths import display_path
 from assembler.gpu.put_model_check import check_with_mujoco_warp
-from assembler.models import PartModel
-from assembler.registry.instances import create_base, create_gripper
-from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS
 
 
 def _part_alone(args: argparse.Namespace) -> bool:
     """Write the MJCF of a gripper or base spec built alone (``assembler build hand.yaml``), if
     ``args.robot`` names one and no robot; return whether it did."""
-    name = robot_name(args.robot)
-    if name in REGISTERED_ROBOTS:
-        return False
-    if name in REGISTERED_GRIPPERS:
-        part: PartModel = create_gripper(name, idn=args.idn)
-    elif name in REGISTERED_BASES:
-        part = create_base(name, idn=args.idn)
-    else:
+    part = part_alone(args)
+    if part is None:
         return False
     _, spec = part.compile_alone_spec()
-    write_xml(args, spec.to_xml(), name)
+    write_xml(args, spec.to_xml(), type(part).__name__)
     return True
 
 

@@ -12,10 +12,10 @@ from collections.abc import Sequence
 from assembler.errors import AssemblerError
 from assembler.files.inputs import note_inputs
 from assembler.files.paths import allowing
-from assembler.models import RobotModel
+from assembler.models import PartModel, RobotModel
 from assembler.registry.catalog import add_spec_folders, register_with_siblings
-from assembler.registry.instances import assemble, create_robot
-from assembler.registry.lookup import robot_class
+from assembler.registry.instances import assemble, create_base, create_gripper, create_robot
+from assembler.registry.lookup import REGISTERED_BASES, REGISTERED_GRIPPERS, REGISTERED_ROBOTS, robot_class
 from assembler.spec.documents import Override, parse_overrides
 from assembler.spec.part_arguments import DEFAULT, is_spec_file
 from assembler.worlds.variants.effects import overrides_without_effect, superseded
@@ -75,6 +75,19 @@ def assembled(args: argparse.Namespace, overrides: Sequence[Override] | None = N
     robot = assemble(name, idn=args.idn, base=base, grippers=grippers, overrides=changes)
     note_inputs(spec_files(robot))
     return robot
+
+
+def part_alone(args: argparse.Namespace) -> PartModel | None:
+    """The gripper or base ``args.robot`` names, made alone (``assembler build hand.yaml``, ``render``);
+    None when it names a robot or nothing registered (the robot path then says what it knows)."""
+    name = robot_name(args.robot)
+    if name in REGISTERED_ROBOTS:
+        return None
+    if name in REGISTERED_GRIPPERS:
+        return create_gripper(name, idn=args.idn)
+    if name in REGISTERED_BASES:
+        return create_base(name, idn=args.idn)
+    return None
 
 
 def spec_files(robot: RobotModel) -> list[str]:

@@ -20,7 +20,7 @@ import time
 from pathlib import Path
 from typing import Literal
 
-from assembler.cli.common import assembled, gripper_choices, robot_name
+from assembler.cli.common import assembled, gripper_choices, part_alone, robot_name
 from assembler.errors import AssemblerError
 from assembler.files import menagerie
 from assembler.files.paths import display_path
@@ -171,7 +171,8 @@ def run_render(args: argparse.Namespace) -> int:
     views = [view.strip() for view in args.views.split(",") if view.strip()]
     check_views(views)  # before the robot is built: a typo should fail fast
     width, height = args.size
-    picture = take_picture(assembled(args), views, width, height, args.labels, args.groups)
+    part = part_alone(args) or assembled(args)  # a gripper or base spec alone, as build makes it
+    picture = take_picture(part, views, width, height, args.labels, args.groups)
     target = Path(args.output)
     write_atomically(target, encode_png(picture.image))
     height, width, _ = picture.image.shape

@@ -7,6 +7,7 @@ import struct
 import subprocess
 import sys
 import zlib
+from collections.abc import Callable
 from pathlib import Path
 
 import mujoco
@@ -15,7 +16,7 @@ import pytest
 
 import assembler
 from assembler.cli import arguments, main
-from assembler.models import RobotModel
+from assembler.models import PartModel, RobotModel
 from assembler.models.geom_groups import geoms_by_part
 from assembler.tools.render import LABELS, VIEWS, encode_png
 from assembler.tools.render.picture import render_views
@@ -303,3 +304,19 @@ def test_the_cli_offers_the_renderers_views_labels_and_groups() -> None:
     assert tuple(VIEWS) == arguments.VIEWS
     assert set(arguments.LABELS) == set(LABELS)
     assert list(arguments.GEOM_GROUPS) == list(range(mujoco.mjNGROUP))
+
+
+@pytest.mark.parametrize(
+    ("name", "make"),
+    [("PincerGripper", assembler.create_gripper), ("RoverBase", assembler.create_base)],
+    ids=["gripper", "base"],
+)
+def test_a_gripper_or_base_spec_renders_alone_as_build_makes_it(
+    name: str, make: Callable[[str], PartModel], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    stage = build_stage(make(name), WIDTH, HEIGHT)
+    (image,) = render_views(stage, ["iso"], WIDTH, HEIGHT)
+    assert robot_mask(stage, image, "iso").mean() > 0.05  # the part fills its picture, framed alone
+    out = tmp_path / "part.png"
+    assert main(["render", name, "-o", str(out)]) == 0  # was "unknown robot"
+    assert out.read_bytes().startswith(b"\x89PNG") and capsys.readouterr().err.startswith(f"wrote {out}")

@@ -10,7 +10,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.models import RobotModel
+from assembler.models import PartModel
 from assembler.tools.render.backend import RenderError, new_renderer
 from assembler.tools.render.framing import VIEWS, frame
 from assembler.tools.render.stage import Stage, build_stage
@@ -89,7 +89,7 @@ class Picture:
 
 
 def take_picture(
-    robot: RobotModel,
+    robot: PartModel,
     views: Sequence[str] = ("iso",),
     width: int = 640,
     height: int = 480,
@@ -105,7 +105,7 @@ def take_picture(
 
 
 def render_robot(
-    robot: RobotModel,
+    robot: PartModel,
     views: Sequence[str] = ("iso",),
     width: int = 640,
     height: int = 480,

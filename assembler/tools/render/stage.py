@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 from assembler.compiler.compile import compile_home
 from assembler.mjcf.geom_group_numbers import VISUAL_GROUPS
 from assembler.mjcf.keyframe import HOME_KEY
-from assembler.models import RobotModel
+from assembler.models import PartModel, RobotModel
 from assembler.models.geom_groups import PartGeoms, describe, geoms_by_part
 from assembler.tools.render.backend import RenderError
 
@@ -110,7 +110,7 @@ def _show_only(model: mujoco.MjModel, drawn: set[int], floor: int) -> None:
             model.geom_group[geom] = SHOWN_GROUP if geom in drawn else HIDDEN_GROUP
 
 
-def _nothing_to_draw(robot: RobotModel, parts: Sequence[PartGeoms], shown: str) -> RenderError:
+def _nothing_to_draw(robot: PartModel, parts: Sequence[PartGeoms], shown: str) -> RenderError:
     groups = sorted({group for part in parts for group in part.groups})
     having = f"its geoms are in {describe([], groups)}" if groups else "it has no geoms"
     return RenderError(
@@ -142,16 +142,26 @@ def box_corners(model: mujoco.MjModel, data: mujoco.MjData, geoms: list[int]) ->
     return np.concatenate(corners) if corners else np.zeros((1, 3))
 
 
-def build_stage(robot: RobotModel, width: int, height: int, groups: Sequence[int] | None = None) -> Stage:
-    """Compile the robot with scenery at its home pose, the floor just under its lowest point, showing
-    the geoms in ``groups`` (default: each part's visual geoms, or its collision geoms if it has none)."""
-    spec = robot.mjspec.copy()
+def _assembly(part: PartModel) -> tuple[mujoco.MjSpec, dict[str, float], tuple[PartModel, ...]]:
+    """A fresh assembly of ``part`` (a robot with its base and grippers; a gripper or base alone, as
+    ``assembler build`` builds it), its home pose, and the parts whose geoms it holds."""
+    if isinstance(part, RobotModel):
+        return part.mjspec.copy(), part.assembly_home(), (part, *part.models)
+    _, alone = part.compile_alone_spec()  # a new assembly each time: the picture's to edit
+    return alone, part.home_qpos(), (part,)
+
+
+def build_stage(robot: PartModel, width: int, height: int, groups: Sequence[int] | None = None) -> Stage:
+    """Compile the robot (or a gripper or base alone) with scenery at its home pose, the floor just
+    under its lowest point, showing the geoms in ``groups`` (default: each part's visual geoms, or its
+    collision geoms if it has none)."""
+    spec, home, members = _assembly(robot)
     spec.visual.global_.offwidth = max(width, spec.visual.global_.offwidth)
     spec.visual.global_.offheight = max(height, spec.visual.global_.offheight)
     _add_scenery(spec)
-    model = compile_home(spec, robot.assembly_home(), f"robot '{type(robot).__name__}'")
+    model = compile_home(spec, home, f"{robot.family} '{type(robot).__name__}'")
     floor = model.geom(FLOOR).id
-    parts = geoms_by_part(model, (robot, *robot.models))
+    parts = geoms_by_part(model, members)
     shown = describe(parts, groups)
     _show_only(model, _drawn(model, parts, groups), floor)
     if not drawn_geoms(model):  # an empty picture would say nothing, not even why
