@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import signal
 import textwrap
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -115,6 +116,16 @@ def use_private_cache(folder: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     monkeypatch.delenv("ASSEMBLER_NO_CACHE", raising=False)
     monkeypatch.delenv("ASSEMBLER_CACHE_MAX_BYTES", raising=False)
     return folder
+
+
+@pytest.fixture(scope="session", autouse=True)
+def ctrl_c_as_at_a_terminal() -> None:
+    """Ctrl-C reaches the commands the tests start, as it does at a terminal. A test run started in the
+    background of a non-interactive shell (``pytest &``) ignores SIGINT, and every process it starts
+    would inherit that (an ignored signal stays ignored across exec): the tests of Ctrl-C then see
+    commands that cannot be interrupted."""
+    if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 @pytest.fixture(autouse=True)
