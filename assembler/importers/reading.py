@@ -135,12 +135,18 @@ def read_model_file(path: Path, fixes: Sequence[MjcfFix] = (), strict: bool = Fa
     if package is None and fmt == "urdf":  # a ROS package in a share/ tree (cmeel's example-robot-data)
         package = share_reference(path)
     reference = package or str(path)
+    refused: MjcfError | None = None
     with allowing([] if package else [path.parent]), warnings.catch_warnings(record=True) as said:
         warnings.simplefilter("always")
-        source, model, balanced = _read(path, reference, fmt, fixes, strict)
+        try:
+            source, model, balanced = _read(path, reference, fmt, fixes, strict)
+        except MjcfError as error:  # MuJoCo 3.9 refuses a NaN itself: the lines that say where stay
+            refused = error
     for warning in said:  # a number that is not finite is refused below: said once, there
-        if NOT_FINITE not in str(warning.message):
+        if refused is not None or NOT_FINITE not in str(warning.message):
             warnings.warn(warning.message, warning.category, stacklevel=2)
+    if refused is not None:
+        raise refused
     changed = repairs(source) if strict else []
     if changed:
         raise MjcfError([Problem(f"{line}; {STRICT}") for line in changed])

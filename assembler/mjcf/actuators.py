@@ -48,6 +48,13 @@ ValueOrigin = Literal[
 GAIN_FIELDS: tuple[str, ...] = ("kp", "kv", "dampratio", "gainprm", "biasprm")
 
 
+def find_actuator(spec: mujoco.MjSpec, name: str) -> mujoco.MjsActuator | None:
+    """The actuator called ``name``, or None. Not ``spec.actuator(name)``: on MuJoCo 3.9 that misses an
+    actuator added to a spec since it was parsed or copied (measured: None for a motor's actuator
+    that ``spec.actuators`` holds)."""
+    return next((actuator for actuator in spec.actuators if actuator.name == name), None)
+
+
 def followers(spec: mujoco.MjSpec) -> set[str]:
     """Joints that follow another through a joint equality (``joint1`` of each, e.g. a URDF ``<mimic>``)."""
     return {e.name1 for e in spec.equalities if e.type == mujoco.mjtEq.mjEQ_JOINT and e.name2}

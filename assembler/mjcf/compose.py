@@ -188,8 +188,8 @@ def copy_properties(source: Any, target: Any) -> None:
 def move_actuators_last(assembly: mujoco.MjSpec, names: Sequence[str]) -> None:
     """Move the named actuators, in order, to the end of the actuator list."""
     for name in names:
-        old = assembly.actuator(name)
-        new = assembly.add_actuator()
+        old = next(a for a in assembly.actuators if a.name == name)  # not assembly.actuator(): see
+        new = assembly.add_actuator()  # mjcf.actuators.find_actuator (MuJoCo 3.9 misses added ones)
         copy_properties(old, new)
         assembly.delete(old)
         new.name = name

@@ -283,17 +283,17 @@ def _load(path: Path, mtime_ns: int, size: int, fixes_json: str, homes: frozense
             raise MjcfError(f"{shown}: asset file {display_path(missing[0])}: {kind}")
         raise MjcfError(f"{shown}: asset file not found: {display_path(missing[0])}")
     spec = settle_default_site_materials(spec)
-    # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
-    check_as_mujoco(_parse(path, fixes, on_disk)[1], spec, shown, lines)
-    refuse_unattachable(spec, shown)
     not_finite = [
         line
         for file in read
         if file.suffix.lower() == ".xml"
         for line in non_finite_values(file.read_bytes(), display_path(file), "the file")
     ]
-    for line in not_finite:  # said once per version of the file, as MuJoCo's own warnings are
-        warnings.warn(line, AssemblerWarning, stacklevel=2)
+    for line in not_finite:  # said once per version of the file, as MuJoCo's own warnings are, and
+        warnings.warn(line, AssemblerWarning, stacklevel=2)  # before MuJoCo 3.9 refuses a NaN itself
+    # A second parse for the check: MjSpec.copy() itself drops what it cannot resolve, in silence.
+    check_as_mujoco(_parse(path, fixes, on_disk)[1], spec, shown, lines)
+    refuse_unattachable(spec, shown)
     return MjcfSource(
         path=path,
         pristine=spec,

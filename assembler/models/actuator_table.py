@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import mujoco
 
 from assembler.errors import Problem
-from assembler.mjcf.actuators import MOVING, ValueOrigin, add_declared_actuator, followers
+from assembler.mjcf.actuators import MOVING, ValueOrigin, add_declared_actuator, find_actuator, followers
 from assembler.models.joint_rules import SpecProblem, matching_joints, no_match
 from assembler.models.motor_rules import Derived
 from assembler.spec.fieldpath import FieldPath
@@ -110,7 +110,7 @@ def declare_actuators(
                 continue
             spec.delete(existing.pop(joint_name))
         name = entry.name.replace("{joint}", joint_name)
-        if spec.actuator(name) is not None:
+        if find_actuator(spec, name) is not None:
             message = f"an actuator named '{name}' already exists; give the entry another name"
             problems.append(problem(ACTUATORS.child(index).child("name"), message))
             continue

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 import mujoco
 
 from assembler.errors import Problem, RegistryError
-from assembler.mjcf.actuators import MOVING, MotorActuation, add_motor_actuator, followers
+from assembler.mjcf.actuators import MOVING, MotorActuation, add_motor_actuator, find_actuator, followers
 from assembler.models.actuator_table import ActuatorRecord
 from assembler.models.joint_rules import JointTable, JointValue, SpecProblem, matching_joints, no_match
 from assembler.models.motor_rules import Derived, Drive
@@ -157,7 +157,7 @@ def add_motor_actuators(
             mjspec.delete(actuator)
         records = [r for r in records if r.name not in {a.name for a in replaced}]
         name = entry.name.replace("{joint}", joint)
-        if mjspec.actuator(name) is not None:
+        if find_actuator(mjspec, name) is not None:
             message = f"an actuator named '{name}' already exists; give the entry another name"
             problems.append(problem(MOTORS_FIELD.child(drive.index).child("name"), message))
             continue

@@ -14,6 +14,7 @@ from collections.abc import Collection, Mapping
 
 import mujoco
 
+from assembler.mjcf.actuators import find_actuator
 from assembler.robosuite.conventions import is_servo, limits_force
 
 
@@ -49,8 +50,13 @@ def torque_motors(mjspec: mujoco.MjSpec, limits: Mapping[str, float]) -> None:
     """Turn each actuator named in ``limits`` (a DC motor that takes volts) into the motor ``control:
     torque`` gives its joint: ctrl is the joint torque (gear 1), ctrlrange = forcerange = ±limit."""
     for name, limit in limits.items():
-        actuator = mjspec.actuator(name)
+        actuator = find_actuator(mjspec, name)
+        assert actuator is not None  # named by the part's own actuator records
         actuator.set_to_motor()  # gain 1, no bias, no dynamics: the back-EMF is the driver's to handle
+        # MuJoCo 3.9's set_to_motor leaves the DC motor's other parameters ([R, K, ...]) in place
+        actuator.gainprm = [1.0] + [0.0] * (len(actuator.gainprm) - 1)
+        actuator.biasprm = [0.0] * len(actuator.biasprm)
+        actuator.dynprm = [1.0] + [0.0] * (len(actuator.dynprm) - 1)  # MuJoCo's default
         actuator.gear = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
         for attribute in ("ctrl", "force"):
             setattr(actuator, f"{attribute}range", [-limit, limit])
