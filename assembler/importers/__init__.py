@@ -53,7 +53,7 @@ NAME_ENDINGS: dict[str, str] = {"robot": "Arm", "gripper": "Hand", "base": "Base
 ARM_WITH_HAND = re.compile(r"with_?(hand|gripper)", re.IGNORECASE)
 """Words that say the file is an arm carrying its hand (``xarm6_with_gripper.urdf``)."""
 
-__all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec"]
+__all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec", "write_spec_and_jaw"]
 
 
 @dataclass(frozen=True)
@@ -212,6 +212,15 @@ def write_new_spec(
         raise AssemblerError(
             f"{display_path(marker)}: exists; add what new would write to it: {toml.splitlines()[-1]}"
         )
+    write_spec_and_jaw(written, target, force)
+    if toml is not None:
+        write_atomically(marker, toml)
+    return written, target
+
+
+def write_spec_and_jaw(written: NewSpec, target: Path, force: bool) -> None:
+    """Write ``written`` to ``target`` and its jaw's spec beside it, if it has one: both or neither; an
+    existing jaw spec is kept unless ``force``."""
     jaw_target = written.jaw_path(target)
     if jaw_target is not None and os.path.lexists(jaw_target) and not force:
         raise AssemblerError(
@@ -226,6 +235,3 @@ def write_new_spec(
         if jaw_target is not None:  # no jaw spec without the arm's spec naming it
             jaw_target.unlink(missing_ok=True)
         raise
-    if toml is not None:
-        write_atomically(marker, toml)
-    return written, target

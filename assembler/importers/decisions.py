@@ -122,11 +122,17 @@ def _fixed_fingers(model: mujoco.MjModel, eef: str) -> list[str]:
     return names
 
 
+def file_joint_values() -> Entry:
+    """``joint_defaults`` without rules: the file's own frictionloss, damping and armature are kept."""
+    return Entry("joint_defaults", dict(NO_RULES)).guess(
+        "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
+        "rules (0.1, 0.1 and 5/(i+1) where the file sets none)"
+    )
+
+
 def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[Entry]:
     """The fields of an arm's spec after its name and file; ``jaw``: the file's hand, cut from the arm
     and made the gripper of that name (:mod:`~assembler.importers.jaws`)."""
-    if jaw is not None:
-        return _arm_without_jaw(file, tree, jaw)
     entries = balance_entry(file)
     entries.append(
         Entry("morphology", "manipulator").guess(
@@ -134,14 +140,7 @@ def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[E
             "in joint_groups, a humanoid morphology: humanoid"
         )
     )
-    if tree.eef_by_name:
-        how = "the body named like a hand below the last arm joint"
-    else:
-        how = "the body where the fingers branch off" if tree.fingers else "the last link of the arm's chain"
-    eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"{how}; grippers are mounted here")
-    if tree.grip_site:
-        eef.guess(f"the file's grip frame is the site {tree.grip_site}")
-    entries.append(eef)
+    entries += _end_effector(tree) if jaw is None else _cut_hand(jaw)
     groups: dict[str, list[str]] = {"right": list(tree.arm)}
     for part in ("base", "torso", "head"):
         if getattr(tree, part):
@@ -154,48 +153,69 @@ def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[E
             if getattr(tree, part)
         )
     )
-    if tree.fingers:
+    if tree.fingers and jaw is None:
         joints.decide(
             f"{_short(tree.fingers)} move a jaw or fingers that are part of this file: they are listed in no "
             "group, so that robosuite's arm controller does not drive them; list them under right: if it "
             "should"
         )
     entries.append(joints)
-    fixed_hand = _fixed_fingers(file.model, tree.eef_body)
-    if tree.fingers:
-        entries.append(
-            Entry("default_grippers", {"right": None}).guess(
-                "the file has its own jaw, so no gripper is added; a gripper spec of the jaw needs its "
-                "own file"
-            )
-        )
-    elif fixed_hand:
-        entries.append(
-            Entry("default_grippers", {"right": None}).decide(
-                f"the file has its own hand, fixed ({_short(fixed_hand, 3)}: bodies named like fingers "
-                "below the end effector, without joints): no gripper is added on top of it; a gripper "
-                "of your choice needs a file of the arm without that hand"
-            )
-        )
-    else:
-        entries.append(
-            Entry("default_grippers", {"right": DEFAULT_GRIPPER}).guess(
-                f"no jaw in the file: the shipped {DEFAULT_GRIPPER}, so robosuite's tasks can grasp; any "
-                "registered gripper (assembler list grippers) or null"
-            )
-        )
-    pose = init_qpos_entry(file, tree.joints)
+    entries.append(_default_gripper(file, tree, jaw))
+    own = tuple(name for name in tree.joints if jaw is None or name not in jaw.joints)  # the jaw's go with it
+    pose = init_qpos_entry(file, own)
     entries += [pose] if pose else []
-    entries.append(
-        Entry("joint_defaults", dict(NO_RULES)).guess(
-            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
-            "rules (0.1, 0.1 and 5/(i+1) where the file sets none)"
-        )
-    )
-    actuators = actuator_entry(file, tree.joints)
+    entries.append(file_joint_values())
+    actuators = actuator_entry(file, own)
     entries += [actuators] if actuators else []
     entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
     return entries
+
+
+def _end_effector(tree: Tree) -> list[Entry]:
+    if tree.eef_by_name:
+        how = "the body named like a hand below the last arm joint"
+    else:
+        how = "the body where the fingers branch off" if tree.fingers else "the last link of the arm's chain"
+    eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"{how}; grippers are mounted here")
+    if tree.grip_site:
+        eef.guess(f"the file's grip frame is the site {tree.grip_site}")
+    return [eef]
+
+
+def _cut_hand(jaw: Jaw) -> list[Entry]:
+    """The end effector and the cut of an arm whose file's hand is the gripper ``jaw.name``."""
+    return [
+        Entry("eef_bodies", {"right": jaw.mount}).guess(
+            f"the body the hand {jaw.hand} hangs from; the hand is the gripper mounted here"
+        ),
+        Entry("remove_bodies", [jaw.hand]).guess(
+            f"the hand and its jaw ({_short(jaw.joints, 3)}) are cut from the arm and made the gripper "
+            f"{jaw.name}, whose spec (beside this one) takes them from the same file, so robosuite gives "
+            "the jaw an action"
+        ),
+    ]
+
+
+def _default_gripper(file: ModelFile, tree: Tree, jaw: Jaw | None) -> Entry:
+    if jaw is not None:
+        return Entry("default_grippers", {"right": jaw.name}).guess(
+            "the file's own jaw; any registered gripper (assembler list grippers) in its place"
+        )
+    if tree.fingers:
+        return Entry("default_grippers", {"right": None}).guess(
+            "the file has its own jaw, so no gripper is added; a gripper spec of the jaw needs its own file"
+        )
+    fixed_hand = _fixed_fingers(file.model, tree.eef_body)
+    if fixed_hand:
+        return Entry("default_grippers", {"right": None}).decide(
+            f"the file has its own hand, fixed ({_short(fixed_hand, 3)}: bodies named like fingers "
+            "below the end effector, without joints): no gripper is added on top of it; a gripper "
+            "of your choice needs a file of the arm without that hand"
+        )
+    return Entry("default_grippers", {"right": DEFAULT_GRIPPER}).guess(
+        f"no jaw in the file: the shipped {DEFAULT_GRIPPER}, so robosuite's tasks can grasp; any "
+        "registered gripper (assembler list grippers) or null"
+    )
 
 
 @dataclass(frozen=True)
@@ -210,42 +230,3 @@ class Jaw:
     """The hand's parent, the arm's end effector the gripper is mounted on."""
     joints: tuple[str, ...]
     """The jaw's joints: every joint below the hand."""
-
-
-def _arm_without_jaw(file: ModelFile, tree: Tree, jaw: Jaw) -> list[Entry]:
-    """An arm's fields when its file's jaw is a gripper spec of its own."""
-    arm_joints = tuple(name for name in tree.joints if name not in jaw.joints)
-    entries = [
-        *balance_entry(file),
-        Entry("morphology", "manipulator").guess(f"one arm of {len(tree.arm)} joints"),
-        Entry("eef_bodies", {"right": jaw.mount}).guess(
-            f"the body the hand {jaw.hand} hangs from; the hand is the gripper mounted here"
-        ),
-        Entry("remove_bodies", [jaw.hand]).guess(
-            f"the hand and its jaw ({_short(jaw.joints, 3)}) are cut from the arm and made the gripper "
-            f"{jaw.name}, whose spec (beside this one) takes them from the same file, so robosuite gives "
-            "the jaw an action"
-        ),
-    ]
-    groups: dict[str, list[str]] = {"right": list(tree.arm)}
-    for part in ("base", "torso", "head"):
-        if getattr(tree, part):
-            groups[part] = list(getattr(tree, part))
-    entries.append(Entry("joint_groups", groups).guess("the arm is the chain of joints to the hand"))
-    entries.append(
-        Entry("default_grippers", {"right": jaw.name}).guess(
-            "the file's own jaw; any registered gripper (assembler list grippers) in its place"
-        )
-    )
-    pose = init_qpos_entry(file, arm_joints)
-    entries += [pose] if pose else []
-    entries.append(
-        Entry("joint_defaults", dict(NO_RULES)).guess(
-            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
-            "rules (0.1, 0.1 and 5/(i+1) where the file sets none)"
-        )
-    )
-    actuators = actuator_entry(file, arm_joints)
-    entries += [actuators] if actuators else []
-    entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
-    return entries

@@ -11,11 +11,11 @@ from typing import Any
 
 import mujoco
 
-from assembler.importers.decisions import NO_RULES, Jaw, balance_entry, init_qpos_entry
+from assembler.importers.decisions import Jaw, balance_entry, file_joint_values, init_qpos_entry
 from assembler.importers.entries import Entry, short
 from assembler.importers.reading import ModelFile
 from assembler.importers.servos import actuated_joints, actuator_entry, actuator_label
-from assembler.importers.tree import SLIDE, Tree
+from assembler.importers.tree import SLIDE, Tree, subtree
 
 
 def jaw_of(model: mujoco.MjModel, tree: Tree, name: str) -> Jaw | None:
@@ -28,10 +28,7 @@ def jaw_of(model: mujoco.MjModel, tree: Tree, name: str) -> Jaw | None:
     parent = int(model.body_parentid[hand])
     if model.body_jntnum[hand] or parent == 0:
         return None
-    below = {hand}
-    for body in range(hand + 1, model.nbody):  # MuJoCo numbers a subtree after its root
-        if int(model.body_parentid[body]) in below:
-            below.add(body)
+    below = set(subtree(model, hand))
     joints = tuple(model.joint(j).name for j in range(model.njnt) if int(model.jnt_bodyid[j]) in below)
     if set(joints) != set(tree.fingers):
         return None
@@ -61,7 +58,7 @@ def jaw_entries(file: ModelFile, jaw: Jaw, tree: Tree) -> list[Entry]:
         )
     pose = init_qpos_entry(file, jaw.joints)
     entries += [pose] if pose else []
-    entries.append(Entry("joint_defaults", dict(NO_RULES)).guess("the file's own values are kept"))
+    entries.append(file_joint_values())
     servos = actuator_entry(file, jaw.joints)
     entries += [servos] if servos else []
     entries.append(_actions(file, jaw, servos))

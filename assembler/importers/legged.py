@@ -4,7 +4,7 @@ floating on its own feet, no gripper guessed onto any limb."""
 
 from __future__ import annotations
 
-from assembler.importers.decisions import NO_RULES, balance_entry, init_qpos_entry
+from assembler.importers.decisions import balance_entry, file_joint_values, init_qpos_entry
 from assembler.importers.entries import Entry, short
 from assembler.importers.reading import ModelFile
 from assembler.importers.servos import actuator_entry
@@ -113,12 +113,7 @@ def legged_entries(file: ModelFile, tree: Tree) -> list[Entry]:
             "its feet reach the floor from the root's height in the file"
         )
         entries.append(pose)
-    entries.append(
-        Entry("joint_defaults", dict(NO_RULES)).guess(
-            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
-            "rules"
-        )
-    )
+    entries.append(file_joint_values())
     actuators = actuator_entry(file, tree.joints)
     entries += [actuators] if actuators else []
     entries.append(_mjlab_entry(file))

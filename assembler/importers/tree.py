@@ -105,7 +105,8 @@ def _common_ancestor(model: mujoco.MjModel, bodies: list[int]) -> int:
     return max(shared, key=lambda b: len(_ancestors(model, b))) if shared else 1
 
 
-def _subtree(model: mujoco.MjModel, top: int) -> list[int]:
+def subtree(model: mujoco.MjModel, top: int) -> list[int]:
+    """``top`` and every body below it."""
     return [b for b in range(1, model.nbody) if top in _ancestors(model, b)]
 
 
@@ -121,7 +122,7 @@ def _finger_joints(model: mujoco.MjModel, joints: list[int]) -> list[int]:
     if not named:
         return []
     hand = _common_ancestor(model, [int(model.body_parentid[model.jnt_bodyid[j]]) for j in named])
-    below = set(_subtree(model, hand)) - {hand}
+    below = set(subtree(model, hand)) - {hand}
     return [j for j in joints if j in named or int(model.jnt_bodyid[j]) in below]
 
 
@@ -135,14 +136,14 @@ def _eef_body(model: mujoco.MjModel, arm: list[int], fingers: list[int]) -> tupl
     if not arm:
         return 1, False
     last = int(model.jnt_bodyid[arm[-1]])
-    for body in _subtree(model, last):
+    for body in subtree(model, last):
         if EEF_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_BODY, body)):
             return body, True
     return last, False
 
 
 def _grip_site(model: mujoco.MjModel, top: int) -> str | None:
-    below = set(_subtree(model, top))
+    below = set(subtree(model, top))
     for site in range(model.nsite):
         name = _name(model, mujoco.mjtObj.mjOBJ_SITE, site)
         if int(model.site_bodyid[site]) in below and GRIP_WORDS.search(name):
@@ -156,7 +157,7 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
     names = {j: _name(model, mujoco.mjtObj.mjOBJ_JOINT, j) for j in joints}
     roots = [b for b in range(1, model.nbody) if model.body_parentid[b] == 0]
     if hand:  # the world child holding the most joints (a scene file also has a floor, a table...)
-        root = max(roots, key=lambda top: sum(int(model.body_jntnum[b]) for b in _subtree(model, top)))
+        root = max(roots, key=lambda top: sum(int(model.body_jntnum[b]) for b in subtree(model, top)))
         site = _grip_site(model, root)
         every = tuple(names.values())
         return Tree(every, (), every, (), (), (), _name(model, mujoco.mjtObj.mjOBJ_BODY, root), False, site)
@@ -197,7 +198,7 @@ def _legged_tree(
 ) -> Tree | None:
     """The tree of a robot with feet (:mod:`~assembler.importers.limbs`), or None. Fingers are the
     joints named so (each hand's own: no subtree of both hands is taken for a jaw)."""
-    root = max(roots, key=lambda top: (sum(int(model.body_jntnum[b]) for b in _subtree(model, top)), -top))
+    root = max(roots, key=lambda top: (sum(int(model.body_jntnum[b]) for b in subtree(model, top)), -top))
     fingers = [j for j in joints if FINGER_WORDS.search(names[j])]
     head = [j for j in joints if j not in fingers and PART_WORDS["head"].search(names[j])]
     limbs = read_limbs(model, root, skip={*base, *fingers, *head})

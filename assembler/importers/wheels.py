@@ -9,14 +9,14 @@ from typing import Any
 
 import mujoco
 import numpy as np
-import numpy.typing as npt
 
-from assembler.importers.decisions import NO_RULES, balance_entry, init_qpos_entry
+from assembler.importers.decisions import balance_entry, file_joint_values, init_qpos_entry
 from assembler.importers.entries import Entry, short
 from assembler.importers.physics import joint_id, posed_data, torque_limit
 from assembler.importers.reading import ModelFile
 from assembler.importers.servos import STABLE, actuator_entry
 from assembler.importers.tree import Tree
+from assembler.tools.render.stage import box_corners
 
 SPIN_SATURATION = 1.0
 """rad/s: the wheel speed error at which a wheel's velocity servo reaches its effort limit."""
@@ -25,22 +25,10 @@ STEERING = re.compile(r"steer", re.IGNORECASE)
 """A hinge that turns a wheel's axis (a position servo), not the wheel itself (racecar's right steering
 hinge is a URDF ``continuous`` joint: unlimited, and still a steering hinge)."""
 
-CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
-
 
 def is_wheeled_base(tree: Tree) -> bool:
     """True for a robot with wheels and neither arm nor feet: a mobile base, not a robot of its own."""
     return bool(tree.wheels) and tree.limbs is None and not tree.arm
-
-
-def _geom_points(model: mujoco.MjModel, data: mujoco.MjData, geoms: list[int]) -> npt.NDArray[np.float64]:
-    """The corners of each geom's bounding box, in the world frame at the home pose."""
-    points = []
-    for geom in geoms:
-        center, half = model.geom_aabb[geom][:3], model.geom_aabb[geom][3:]
-        rotation = data.geom_xmat[geom].reshape(3, 3)
-        points.append(data.geom_xpos[geom] + (center + CORNERS * half) @ rotation.T)
-    return np.concatenate(points) if points else np.zeros((1, 3))
 
 
 def _footprint(model: mujoco.MjModel, root: int) -> tuple[float, float, float]:
@@ -50,9 +38,9 @@ def _footprint(model: mujoco.MjModel, root: int) -> tuple[float, float, float]:
     data = posed_data(model)
     colliding = [g for g in range(model.ngeom) if model.geom_contype[g] or model.geom_conaffinity[g]]
     geoms = colliding or list(range(model.ngeom))
-    everything = _geom_points(model, data, geoms) - data.xpos[root]
+    everything = box_corners(model, data, geoms) - data.xpos[root]
     own = [g for g in geoms if int(model.geom_bodyid[g]) == root] or geoms
-    top = _geom_points(model, data, own) - data.xpos[root]
+    top = box_corners(model, data, own) - data.xpos[root]
     radius = float(np.max(np.linalg.norm(everything[:, :2], axis=1)))
     return float(everything[:, 2].min()), float(top[:, 2].max()), radius
 
@@ -111,12 +99,7 @@ def base_entries(file: ModelFile, tree: Tree) -> list[Entry]:
     entries.append(joints)
     pose = init_qpos_entry(file, tree.joints)
     entries += [pose] if pose else []
-    entries.append(
-        Entry("joint_defaults", dict(NO_RULES)).guess(
-            "the file's own frictionloss, damping and armature are kept; delete this line for robosuite's "
-            "rules"
-        )
-    )
+    entries.append(file_joint_values())
     entries += _actuators(file, tree, others)
     entries.append(
         Entry("add_free_joint", False).decide(

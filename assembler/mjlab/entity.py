@@ -73,10 +73,23 @@ def home_joint_positions(model: mujoco.MjModel) -> tuple[tuple[float, ...] | Non
     return root, positions
 
 
-def _force_limit(model: mujoco.MjModel, actuator: int) -> float | None:
+def force_limit(model: mujoco.MjModel, actuator: int) -> float | None:
+    """The actuator's largest force magnitude, or None when its force is not limited."""
     if not model.actuator_forcelimited[actuator]:
         return None
     return float(max(abs(v) for v in model.actuator_forcerange[actuator]))
+
+
+def is_position_servo(model: mujoco.MjModel, actuator: int) -> bool:
+    """A position servo without dynamics: fixed gain kp, affine bias -kp·q - kv·qdot."""
+    gain, bias = model.actuator_gainprm[actuator], model.actuator_biasprm[actuator]
+    return (
+        int(model.actuator_dyntype[actuator]) == int(mujoco.mjtDyn.mjDYN_NONE)
+        and int(model.actuator_gaintype[actuator]) == int(mujoco.mjtGain.mjGAIN_FIXED)
+        and int(model.actuator_biastype[actuator]) == int(mujoco.mjtBias.mjBIAS_AFFINE)
+        and bias[1] == -gain[0]
+        and bias[0] == 0
+    )
 
 
 def _voltage_motor(model: mujoco.MjModel, actuator: int) -> DcMotorPhysicalParams | None:
@@ -99,7 +112,7 @@ def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
     ``dcmotor`` in voltage mode), one per actuated joint; any other kind is refused, by name."""
     configs: list[ActuatorCfg] = []
     problems: list[str] = []
-    fixed, affine = int(mujoco.mjtGain.mjGAIN_FIXED), int(mujoco.mjtBias.mjBIAS_AFFINE)
+    fixed = int(mujoco.mjtGain.mjGAIN_FIXED)
     for actuator in range(model.nu):
         name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator) or f"actuator #{actuator}"
         if int(model.actuator_trntype[actuator]) != int(mujoco.mjtTrn.mjTRN_JOINT):
@@ -110,10 +123,9 @@ def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
         joint = mujoco.mj_id2name(model, JOINT, int(model.actuator_trnid[actuator, 0]))
         gain, bias = model.actuator_gainprm[actuator], model.actuator_biasprm[actuator]
         gaintype, biastype = int(model.actuator_gaintype[actuator]), int(model.actuator_biastype[actuator])
-        gear, limit = float(model.actuator_gear[actuator, 0]), _force_limit(model, actuator)
+        gear, limit = float(model.actuator_gear[actuator, 0]), force_limit(model, actuator)
         direct = int(model.actuator_dyntype[actuator]) == int(mujoco.mjtDyn.mjDYN_NONE)
-        is_servo = gaintype == fixed and biastype == affine and bias[1] == -gain[0] and bias[0] == 0
-        if direct and is_servo and gear == 1.0:
+        if is_position_servo(model, actuator) and gear == 1.0:
             configs.append(
                 BuiltinPositionActuatorCfg(
                     target_names_expr=(_exact(joint),),

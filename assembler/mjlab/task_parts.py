@@ -72,8 +72,8 @@ class TaskParts:
         for body, site, pos in self.feet:
             spec.body(body).add_site(name=site, pos=list(pos), group=5)
             for place, geom in enumerate(spec.body(body).geoms):  # in the compiled model's order
-                if not geom.name and f"{body}_geom{place}" in self.foot_geoms:
-                    geom.name = f"{body}_geom{place}"
+                if not geom.name and foot_geom_name(body, place) in self.foot_geoms:
+                    geom.name = foot_geom_name(body, place)
 
     def feet_sensor(self, entity: str = "robot") -> ContactSensorCfg:
         """The feet contact sensor mjlab's velocity task reads (``feet_ground_contact``), as its G1's."""
@@ -90,11 +90,10 @@ class TaskParts:
         )
 
 
-def foot_geom_name(model: mujoco.MjModel, geom: int) -> str:
+def foot_geom_name(body: str, place: int) -> str:
     """The name a foot's unnamed geom gets in mjlab's copy of the robot (a URDF's collision geoms have
     none; mjlab selects geoms by name): its body's name and its place among that body's geoms."""
-    body = int(model.geom_bodyid[geom])
-    return f"{model.body(body).name}_geom{geom - int(model.body_geomadr[body])}"
+    return f"{body}_geom{place}"
 
 
 def _body(model: mujoco.MjModel, prefix: str, name: str, field: str) -> str:
@@ -173,7 +172,7 @@ def task_parts(robot: RobotModel, model: mujoco.MjModel) -> TaskParts:
         if not own:
             problems.append(f"mjlab.feet: {body} has no collision geom to stand on")
             continue
-        geoms += [model.geom(g).name or foot_geom_name(model, g) for g in own]
+        geoms += [model.geom(g).name or foot_geom_name(body, g - int(model.body_geomadr[b])) for g in own]
         low = min(own, key=lambda g: geom_lowest(model, data, g))
         point = data.geom_xpos[low].copy()
         point[2] = geom_lowest(model, data, low)

@@ -18,7 +18,7 @@ from mjlab.envs import ManagerBasedRlEnvCfg
 from mjlab.envs.mdp.actions import JointPositionActionCfg
 from mjlab.sensor import ObjRef, RayCastSensorCfg, RingPatternCfg, TerrainHeightSensorCfg
 
-from assembler.mjlab.entity import entity_cfg, for_mjlab
+from assembler.mjlab.entity import entity_cfg, for_mjlab, force_limit, is_position_servo
 from assembler.mjlab.task_parts import task_parts
 from assembler.models import RobotModel
 
@@ -32,13 +32,11 @@ def action_scale(model: mujoco.MjModel) -> dict[str, float] | None:
     unless every actuator is a position servo with a force limit (the rule needs both)."""
     scale: dict[str, float] = {}
     for actuator in range(model.nu):
-        gain, bias = model.actuator_gainprm[actuator], model.actuator_biasprm[actuator]
-        servo = bias[1] == -gain[0] and gain[0] > 0
-        if not servo or not model.actuator_forcelimited[actuator]:
+        kp, limit = float(model.actuator_gainprm[actuator, 0]), force_limit(model, actuator)
+        if not is_position_servo(model, actuator) or kp <= 0 or limit is None:
             return None
         joint = model.joint(int(model.actuator_trnid[actuator, 0])).name
-        limit = float(max(abs(v) for v in model.actuator_forcerange[actuator]))
-        scale[re.escape(joint)] = ACTION_SCALE * limit / float(gain[0])
+        scale[re.escape(joint)] = ACTION_SCALE * limit / kp
     return scale
 
 

@@ -29,34 +29,32 @@ def _wheel(side: str, x: float, y: float) -> str:
   </joint>"""
 
 
+def _arm_link(
+    joint: str, parent: str, link: str, mass: float, length: float, origin: str, axis: str, effort: float
+) -> str:
+    """A box link ``length`` long along z, on a revolute joint of range -2..2 rad."""
+    return f"""
+  <link name="{link}">
+    <inertial><mass value="{mass}"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><origin xyz="0 0 {length / 2}"/><geometry><box size="0.05 0.05 {length}"/></geometry></collision>
+  </link>
+  <joint name="{joint}" type="revolute">
+    <parent link="{parent}"/><child link="{link}"/><origin xyz="{origin}"/><axis xyz="{axis}"/>
+    <limit lower="-2" upper="2" effort="{effort}" velocity="2"/>
+  </joint>"""
+
+
 def _cart(arm: bool) -> str:
     """A chassis on four wheels whose lowest point is 0.1 m below the chassis's origin; with ``arm``,
     three revolute joints on top of it."""
-    links = """
-  <link name="shoulder">
-    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0 0 0.15"/><geometry><box size="0.05 0.05 0.3"/></geometry></collision>
-  </link>
-  <joint name="joint1" type="revolute">
-    <parent link="chassis"/><child link="shoulder"/><origin xyz="0 0 0.05"/><axis xyz="0 0 1"/>
-    <limit lower="-2" upper="2" effort="20" velocity="2"/>
-  </joint>
-  <link name="upper">
-    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0 0 0.15"/><geometry><box size="0.05 0.05 0.3"/></geometry></collision>
-  </link>
-  <joint name="joint2" type="revolute">
-    <parent link="shoulder"/><child link="upper"/><origin xyz="0 0 0.3"/><axis xyz="0 1 0"/>
-    <limit lower="-2" upper="2" effort="20" velocity="2"/>
-  </joint>
-  <link name="fore">
-    <inertial><mass value="0.5"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0 0 0.1"/><geometry><box size="0.05 0.05 0.2"/></geometry></collision>
-  </link>
-  <joint name="joint3" type="revolute">
-    <parent link="upper"/><child link="fore"/><origin xyz="0 0 0.3"/><axis xyz="0 1 0"/>
-    <limit lower="-2" upper="2" effort="10" velocity="2"/>
-  </joint>"""
+    links = "".join(
+        _arm_link(*link)
+        for link in (
+            ("joint1", "chassis", "shoulder", 1.0, 0.3, "0 0 0.05", "0 0 1", 20),
+            ("joint2", "shoulder", "upper", 1.0, 0.3, "0 0 0.3", "0 1 0", 20),
+            ("joint3", "upper", "fore", 0.5, 0.2, "0 0 0.3", "0 1 0", 10),
+        )
+    )
     wheels = "".join(_wheel(side, x, y) for side, x, y in WHEELS)
     return f"""<?xml version="1.0"?>
 <robot name="{"cart_arm" if arm else "cart"}">

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 import warnings
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -62,10 +63,8 @@ def test_the_docs_example_runs_mjlabs_velocity_task_with_the_shipped_biped_for_5
     env.close()
 
 
-def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_else_changed() -> None:
-    _needs_urdf("G1")
-    cfg = make_velocity_env_cfg()  # mjlab's task, for any robot: its per-robot slots are empty
-    use_robot(cfg, "G1")
+def _fifty_steps(cfg: Any) -> tuple[ManagerBasedRlEnv, Any]:
+    """mjlab's environment of ``cfg`` on CPU, reset and stepped 50 times with zero actions; the last reward."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # mjlab's and warp's notes about CPU-only runs
         env = ManagerBasedRlEnv(cfg, device="cpu")
@@ -73,6 +72,14 @@ def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_els
         actions = torch.zeros((env.num_envs, env.action_manager.total_action_dim))
         for _ in range(50):
             _, reward, _, _, _ = env.step(actions)
+    return env, reward
+
+
+def test_mjlabs_velocity_task_steps_50_times_with_the_shipped_g1_and_nothing_else_changed() -> None:
+    _needs_urdf("G1")
+    cfg = make_velocity_env_cfg()  # mjlab's task, for any robot: its per-robot slots are empty
+    use_robot(cfg, "G1")
+    env, reward = _fifty_steps(cfg)
     sensors = env.scene.sensors
     assert {"robot/imu_lin_vel", "robot/imu_ang_vel", "robot/root_angmom", "feet_ground_contact"} <= set(
         sensors
@@ -100,13 +107,7 @@ def test_a_quadruped_new_wrote_runs_mjlabs_velocity_task_as_written(tmp_path: Pa
     assert cfg.scene.entities["robot"].articulation.soft_joint_pos_limit_factor == 0.9
     named = cfg.scene.entities["robot"].spec_fn().compile()  # mjlab selects geoms by name: feet's get one
     assert named.geom("robot0_FL_foot_geom0").type == mujoco.mjtGeom.mjGEOM_SPHERE
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # mjlab's and warp's notes about CPU-only runs
-        env = ManagerBasedRlEnv(cfg, device="cpu")
-        env.reset()
-        actions = torch.zeros((env.num_envs, env.action_manager.total_action_dim))
-        for _ in range(50):
-            _, reward, _, _, _ = env.step(actions)
+    env, reward = _fifty_steps(cfg)
     assert {"robot/imu_lin_vel", "robot/imu_ang_vel", "feet_ground_contact"} <= set(env.scene.sensors)
     assert env.common_step_counter == 50 and torch.isfinite(reward).all()
     env.close()
