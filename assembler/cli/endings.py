@@ -86,7 +86,23 @@ def end_cleanly(command: Callable[[], int], *, process_ends: bool = False) -> in
 
     ``process_ends``: the process exits right after (a console script). A Ctrl-C that arrives from
     then on is ignored: the command has ended and said so, and while the interpreter exits (joining
-    worker pools, then restoring the default handler) it would be a death by SIGINT (-2) instead."""
+    worker pools, then restoring the default handler) it would be a death by SIGINT (-2) instead.
+    One that arrives while the command is ending, before it is ignored, ends it as interrupted."""
+    try:
+        return _ended(command, process_ends)
+    except KeyboardInterrupt:  # raised between the command's end and ignoring Ctrl-C
+        _ignore_ctrl_c(process_ends)
+        print("interrupted", file=sys.stderr)
+        return INTERRUPTED
+
+
+def _ignore_ctrl_c(process_ends: bool) -> None:
+    if process_ends and threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # kept as it is by the interpreter's exit
+
+
+def _ended(command: Callable[[], int], process_ends: bool) -> int:
+    """:func:`end_cleanly`'s work; a Ctrl-C in its last steps escapes it (to be said there)."""
     _fill_closed_streams()
     try:
         with warnings.catch_warnings():
@@ -121,8 +137,7 @@ def end_cleanly(command: Callable[[], int], *, process_ends: bool = False) -> in
     except Exception as error:
         return _opengl_problem(error)
     finally:
-        if process_ends and threading.current_thread() is threading.main_thread():
-            signal.signal(signal.SIGINT, signal.SIG_IGN)  # kept as it is by the interpreter's exit
+        _ignore_ctrl_c(process_ends)
 
 
 GL_MODULES = ("gl_context", "osmesa", "egl", "glfw", "cgl")
