@@ -18,16 +18,20 @@ takes); so such a variant is reported with the schema's line and not written
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
+import numpy as np
 
 from assembler.compiler.compile import compile_and_emit
 from assembler.compiler.service import default_store, entry_key
 from assembler.mjcf.emit import XmlText
 from assembler.models import RobotModel
-from assembler.patch.patchable import NotPatchable, model_patch
+from assembler.patch.derived import apply_patch
+from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.patch.xml_edits import patched_text
 from assembler.registry.instances import assemble
@@ -73,12 +77,52 @@ class PatchedXml:
             model, xml = compile_and_emit(made.mjspec, made.assembly_home(), made.describe(), meshes=meshes)
         return cls(made, Resolved.of(made), model, XmlText(xml), grippers, base)
 
+    def _patch(self, overrides: Sequence[Override]) -> ModelPatch | None:
+        """What makes the variant with ``overrides`` of the robot's model, or None when it must be
+        compiled; raises :class:`~assembler.errors.SpecError` for a value its spec refuses."""
+        variant = resolve_variant(self.robot, self.resolved, overrides, self.grippers, self.base)
+        try:
+            return model_patch(self.model, self.resolved, variant)
+        except NotPatchable:
+            return None
+
     def xml(self, overrides: Sequence[Override]) -> str | None:
         """The variant with ``overrides`` (all of them, the fixed ones too) as MJCF text, or None when
         it must be compiled; raises :class:`~assembler.errors.SpecError` for a value its spec refuses."""
-        variant = resolve_variant(self.robot, self.resolved, overrides, self.grippers, self.base)
-        try:
-            patch = model_patch(self.model, self.resolved, variant)
-        except NotPatchable:
+        patch = self._patch(overrides)
+        return None if patch is None else patched_text(self.model, self.text, patch)
+
+    def surely_differ(self, first: Sequence[Override], second: Sequence[Override]) -> bool:
+        """True when the variants with ``first`` and ``second`` are different models, told from their
+        patches alone (no model made): one writes a value (beyond 1e-9) the other does not leave in
+        the same place, and nothing MuJoCo derives after the patch overwrites it (a damping ratio's
+        ``biasprm`` row is recomputed, so it never tells). False: the patches alone cannot tell."""
+        mine_patch, their_patch = self._patch(first), self._patch(second)
+        if mine_patch is None or their_patch is None:
+            return False
+        written = [_kept_values(mine_patch), _kept_values(their_patch)]
+        for name, row in written[0].keys() | written[1].keys():
+            plain = getattr(self.model, name)[row]
+            mine, theirs = (values.get((name, row), plain) for values in written)
+            if not np.allclose(mine, theirs, rtol=1e-9, atol=1e-12, equal_nan=True):
+                return True
+        return False
+
+    def compiled(self, overrides: Sequence[Override]) -> mujoco.MjModel | None:
+        """The model :meth:`xml`'s text of the same variant loads to (within 1e-10), patched in
+        memory: no text is loaded, no mesh decoded. None when the variant must be compiled."""
+        patch = self._patch(overrides)
+        if patch is None:
             return None
-        return patched_text(self.model, self.text, patch)
+        model = copy.copy(self.model)  # MuJoCo's mj_copyModel: arrays of its own
+        apply_patch(model, patch)
+        return model
+
+
+def _kept_values(patch: ModelPatch) -> dict[tuple[str, int], Any]:
+    """(field, row) -> what ``patch`` writes there and the patched model keeps."""
+    return {
+        (name, row): value
+        for name, row, value in patch.entries
+        if not (name == "actuator_biasprm" and row in patch.dampratio)
+    }

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+import itertools
 import json
 import signal
 import subprocess
@@ -19,7 +20,9 @@ from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
 from assembler.mjcf.emit import XmlText
 from assembler.worlds.variants import Grid, VariantPlan, write_variants
+from assembler.worlds.variants.effects import same_model
 from assembler.worlds.variants.run import counts as variant_counts
+from assembler.worlds.variants.run import variant_model, variants_surely_differ
 from tests.conftest import use_private_cache
 from tests.patch.test_patchable import CASES, Write, _register_declared
 from tests.patch.test_patched_api import _differences, _no_compile
@@ -400,3 +403,31 @@ def test_variants_of_a_robot_whose_model_and_xml_are_cached_compile_nothing(
         run = write_variants(_one_variant("Finch6", overrides), tmp_path / "out")
     written = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / str(run.results[0].file)))
     assert _differences(written, compiled) == []
+
+
+def test_the_models_a_sweep_compares_in_memory_are_the_models_its_files_load_to(tmp_path: Path) -> None:
+    """Which varied fields changed nothing is decided on models patched in memory (no text loaded);
+    each must be the model its written file loads to, or a field's effect is misjudged."""
+    plan = VariantPlan(
+        "Sparrow7",
+        grids=(
+            Grid.parse("joint_defaults.damping=0.1,0.4"),
+            Grid.parse("joint_defaults.frictionloss=0.0,0.3"),
+            Grid.parse("joints=[{match: joint2, armature: 0.02}],[{match: joint2, armature: 0.2}]"),
+        ),
+    )
+    run = write_variants(plan, tmp_path)
+    assert run.no_effect == [] and len(run.written) == 8
+    models = []
+    for result in run.written:
+        patched = variant_model(plan, plan.variant(result.index))
+        assert patched is not None, "an edited variant's model is patched, not loaded"
+        loaded = mujoco.MjModel.from_xml_path(str(tmp_path / str(result.file)))
+        assert same_model(patched, loaded), result.index
+        models.append(patched)
+    assert not any(same_model(models[0], other) for other in models[1:])
+    # told apart from their patches alone, as the loaded models are (and a variant from itself never)
+    variants = [plan.variant(result.index) for result in run.written]
+    for first, second in itertools.combinations(range(len(variants)), 2):
+        assert variants_surely_differ(plan, variants[first], variants[second]), (first, second)
+    assert not variants_surely_differ(plan, variants[0], dict(variants[0]))

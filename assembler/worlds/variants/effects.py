@@ -11,7 +11,10 @@ An override that changes nothing is almost always a mistake a reviewer would wan
   differ in it alone differ; grids give such pairs directly, and where none was written (random draws
   vary every field at once) one probe is built: the first variant with only this field changed to
   another variant's value. Identical files are the same model without a load (MJCF emission is
-  deterministic); files that differ are loaded and compared by the same rule.
+  deterministic). Files that differ are different models when the patches that make both variants
+  of the plan's robot write values that differ and stay (no model made); else the two models are
+  patched in memory where patches describe both (what their texts load to, with no mesh decoded: a
+  GR1's text takes ~0.3 s to load) or the texts are loaded, and compared by the same rule.
 
 Models are compared field by field, not byte for byte: one of the two may be a variant patched onto
 the cached robot (:mod:`assembler.patch.robot_variant`) and the other compiled, and those agree to
@@ -33,7 +36,7 @@ from assembler.errors import AssemblerError
 from assembler.models import RobotModel
 from assembler.spec.documents import Override
 from assembler.worlds.variants.plan import VariantPlan
-from assembler.worlds.variants.run import VariantResult, variant_xml
+from assembler.worlds.variants.run import VariantResult, variant_model, variant_xml, variants_surely_differ
 
 RELATIVE = 1e-9
 """How close two numbers of two models must be to be the same (a patch agrees with a compile to 1e-10)."""
@@ -59,6 +62,8 @@ def same_model(first: mujoco.MjModel, second: mujoco.MjModel) -> bool:
         other = theirs[name]
         if value.shape != other.shape:
             return False
+        if np.array_equal(value, other):  # most arrays, meshes first: bit-equal, and cheaper to tell
+            continue
         if np.issubdtype(value.dtype, np.floating):
             if not np.allclose(value, other, rtol=RELATIVE, atol=1e-12, equal_nan=True):
                 return False
@@ -106,10 +111,21 @@ def _shown(value: Any) -> str:
     return json.dumps(value, sort_keys=True, default=str)
 
 
-def _same_files(first: str, second: str, load: Callable[[str], mujoco.MjModel]) -> bool:
-    """Whether two written variants are the same model: identical text is, other text is compared
-    as compiled models (:func:`same_model`)."""
-    return first == second or same_model(load(first), load(second))
+def _same_variants(
+    plan: VariantPlan, values: tuple[dict[str, Any], dict[str, Any]], texts: tuple[str, str]
+) -> bool:
+    """Whether two variants (their ``values`` and MJCF ``texts``) are the same model: identical text
+    is; other text is compared as models (:func:`same_model`), patched in memory where both can be,
+    else loaded."""
+    first, second = texts
+    if first == second:
+        return True
+    if variants_surely_differ(plan, *values):
+        return False
+    patched = [variant_model(plan, variant) for variant in values]
+    if patched[0] is not None and patched[1] is not None:
+        return same_model(patched[0], patched[1])
+    return same_model(mujoco.MjModel.from_xml_string(first), mujoco.MjModel.from_xml_string(second))
 
 
 def _has_effect(plan: VariantPlan, written: Sequence[VariantResult], folder: Path, key: str) -> bool:
@@ -122,9 +138,6 @@ def _has_effect(plan: VariantPlan, written: Sequence[VariantResult], folder: Pat
             texts[name] = (folder / name).read_text()
         return texts[name]
 
-    def load(xml: str) -> mujoco.MjModel:
-        return mujoco.MjModel.from_xml_string(xml)
-
     values = {result.index: plan.variant(result.index) for result in written}
     files = {result.index: str(result.file) for result in written}
     alike: dict[str, dict[str, int]] = {}  # the other fields -> this field's value -> a variant with it
@@ -133,16 +146,20 @@ def _has_effect(plan: VariantPlan, written: Sequence[VariantResult], folder: Pat
         alike.setdefault(others, {}).setdefault(_shown(variant[key]), index)
     pairs = [list(by_value.values())[:2] for by_value in alike.values() if len(by_value) > 1]
     if pairs:
-        return any(not _same_files(text(files[a]), text(files[b]), load) for a, b in pairs)
+        return any(
+            not _same_variants(plan, (values[a], values[b]), (text(files[a]), text(files[b])))
+            for a, b in pairs
+        )
     first = min(values)
     other = next((v for v in plan.variants() if v[key] != values[first][key]), None)
     if other is None:
         return False  # every value the same: nothing was varied
+    probe = {**values[first], key: other[key]}
     try:
-        probe = variant_xml(plan, {**values[first], key: other[key]})
+        probe_text = variant_xml(plan, probe)
     except AssemblerError:
         return True  # the value matters enough to break the build
-    return not _same_files(probe, text(files[first]), load)
+    return not _same_variants(plan, (probe, values[first]), (probe_text, text(files[first])))
 
 
 def fields_without_effect(

@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import mujoco
+
 from assembler.errors import AssemblerError, Problem
 from assembler.files.writing import cannot_write, make_folder, write_atomically
 from assembler.patch.variant_files import TEXT_SECTIONS, PatchedXml
@@ -115,8 +117,7 @@ class _Patcher:
         if plan.store:
             return None
         meshes = plan.cache and meshes
-        cls = robot_class(plan.robot)  # the class registered now: a spec registered again is another
-        robot = (cls, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
+        robot = self._robot(plan, meshes)
         if self.robot != robot:
             self.robot, self.patched = robot, None
             fixed = parse_overrides(plan.fixed, "--set ")
@@ -125,6 +126,18 @@ class _Patcher:
                     plan.robot, plan.idn, plan.base, dict(plan.grippers), fixed, plan.cache, meshes
                 )
         return self.patched
+
+    def for_models(self, plan: VariantPlan) -> PatchedXml | None:
+        """As :meth:`of`, for variants' models: the one held serves whatever its meshes' source (that
+        changes the text alone)."""
+        if self.robot is not None and self.robot[:-1] == self._robot(plan, True)[:-1] and not plan.store:
+            return self.patched
+        return self.of(plan, meshes=True)
+
+    @staticmethod
+    def _robot(plan: VariantPlan, meshes: bool) -> tuple[Any, ...]:
+        cls = robot_class(plan.robot)  # the class registered now: a spec registered again is another
+        return (cls, plan.idn, plan.base, plan.grippers, plan.fixed, meshes)
 
 
 _patcher = _Patcher()
@@ -148,6 +161,20 @@ def variant_xml(plan: VariantPlan, variant: dict[str, Any], meshes: bool = True)
     counts.compiled += 1
     robot = assemble(plan.robot, plan.idn, plan.base, dict(plan.grippers), overrides=plan.overrides(variant))
     return robot.get_xml(cache=plan.cache, store=plan.store, meshes=meshes)
+
+
+def variant_model(plan: VariantPlan, variant: dict[str, Any]) -> mujoco.MjModel | None:
+    """The model of one variant patched in memory from the plan's robot (what its written text loads
+    to), or None when the variant is compiled (:func:`variant_xml`) and its text must be loaded."""
+    patched = _patcher.for_models(plan)
+    return patched.compiled(plan.overrides(variant)) if patched is not None else None
+
+
+def variants_surely_differ(plan: VariantPlan, first: dict[str, Any], second: dict[str, Any]) -> bool:
+    """True when two variants are different models, told from their patches alone (see
+    :meth:`~assembler.patch.variant_files.PatchedXml.surely_differ`); False: not told that way."""
+    patched = _patcher.for_models(plan)
+    return patched is not None and patched.surely_differ(plan.overrides(first), plan.overrides(second))
 
 
 def build_variant(
