@@ -21,6 +21,7 @@ from assembler.files.menagerie import MENAGERIE_SCHEME
 from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
+from assembler.importers.actuator_fixes import actuator_fixes, fixes_entry
 from assembler.importers.decisions import robot_entries
 from assembler.importers.entries import Entry, spec_text
 from assembler.importers.hands import gripper_entries
@@ -134,15 +135,22 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
     with found_packages(packages):
         file = read_model_file(model_path, strict=strict)
     cut = None
+    fixes = []
     if file.format == "mjcf":
         cut = scene_cut(file.path, frozenset(Path(p) for p, _, _ in file.source.files), file.model)
         if cut is not None and cut.cuts:
-            file = read_model_file(model_path, cut.fixes)
+            fixes = cut.fixes
+            file = read_model_file(model_path, fixes)
     guessed_kind, why = _kind(file)
     tree = read_tree(file.model, hand=(kind or guessed_kind) == "gripper")
     if guessed_kind == "robot" and is_wheeled_base(tree):
         guessed_kind, why = "base", "wheels and neither arm nor feet"
     chosen: Kind = kind or guessed_kind
+    repaired = []
+    if file.format == "mjcf":  # read again with them: the jaw's cut and the arm's drive read the names
+        repaired = actuator_fixes(file, fixes, tree.arm if chosen == "robot" and tree.limbs is None else ())
+        if repaired:
+            file = read_model_file(model_path, [*fixes, *(each.fix for each in repaired)])
     load_shipped_specs()
     source = name_source(file.source.pristine.modelname, file.path, scene=cut is not None)
     taken = {*registered_names(), *robosuite_names()}
@@ -160,8 +168,9 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
         named,
         Entry("description", f"{source} from {Path(file.reference).name}, as `assembler new` read it."),
         _package_notes(_file_entry(file, spec_path), packages),
-        *([scene_entry(cut)] if cut is not None else []),
     ]
+    file_fixes = fixes_entry(scene_entry(cut) if cut is not None else None, repaired)
+    entries += [file_fixes] if file_fixes is not None else []
     jaw = None
     if chosen == "gripper":
         entries += gripper_entries(file, tree)
@@ -182,8 +191,10 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
             Entry("name", jaw.name).guess(f"{name}'s jaw; the registry and class name, yours to choose"),
             Entry("description", f"The jaw of {source}, from {Path(file.reference).name}."),
             _file_entry(file, spec_path),
-            *jaw_entries(file, jaw, tree),
         ]
+        jaw_fixes = fixes_entry(None, [each for each in repaired if each.joint in jaw.joints])
+        jaw_fields += [jaw_fixes] if jaw_fixes is not None else []
+        jaw_fields += jaw_entries(file, jaw, tree)
         jaw_spec = NewSpec(spec_text(_header(file), jaw_fields), jaw.name, "gripper")
     return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages), jaw_spec)
 

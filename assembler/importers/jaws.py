@@ -2,8 +2,10 @@
 gripper: the arm's spec cuts the hand from the arm (``remove_bodies``) and names a
 gripper spec that takes the hand from the same file (``root_body``), so robosuite gives the jaw an
 action as it gives any gripper one. A hand that turns on one of the arm's joints (SO-101's
-``gripper_link`` on ``wrist_roll``) cannot be cut without that joint, and a jaw driven by unnamed
-actuators (metaworld's Sawyer) cannot be given actions: their jaws stay in the arm."""
+``gripper_link`` on ``wrist_roll``) cannot be cut without that joint, and a jaw driven by actuators
+without names cannot be given actions: their jaws stay in the arm. (``new`` names the file's unnamed
+actuators on joints before, :mod:`~assembler.importers.actuator_fixes`: metaworld's Sawyer's claws
+are cut.)"""
 
 from __future__ import annotations
 
@@ -34,7 +36,7 @@ def jaw_of(model: mujoco.MjModel, tree: Tree, name: str) -> Jaw | None:
         return None
     driven = actuated_joints(model)
     if any(not model.actuator(driven[j]).name for j in joints if j in driven):
-        return None  # a gripper's actions name its actuators: metaworld's Sawyer leaves its claws' unnamed
+        return None  # a gripper's actions name its actuators: one new could not name (actuator_fixes)
     return Jaw(name, tree.eef_body, model.body(parent).name, joints)
 
 

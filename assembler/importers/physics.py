@@ -68,7 +68,7 @@ def _subtree_bodies(model: mujoco.MjModel, top: int) -> list[int]:
     return bodies
 
 
-def _round_up(value: float) -> float:
+def round_up(value: float) -> float:
     """Up to two significant digits (a guess should not look more precise than it is)."""
     if value <= 0:
         return value
@@ -92,7 +92,7 @@ def torque_limit(model: mujoco.MjModel, data: mujoco.MjData, name: str) -> Limit
     else:
         distances = np.linalg.norm(data.xipos[bodies] - data.xanchor[joint], axis=1)
         load = float(masses @ distances)
-    return Limit(max(FLOOR, _round_up(SAFETY * GRAVITY * load)), False)
+    return Limit(max(FLOOR, round_up(SAFETY * GRAVITY * load)), False)
 
 
 def posed_data(model: mujoco.MjModel) -> mujoco.MjData:

@@ -42,7 +42,7 @@ from assembler.robosuite.conventions import (
     is_bridge_servo,
     offered,
 )
-from assembler.robosuite.parts import undriven_joints
+from assembler.robosuite.parts import undriven_joints, why_undriven
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 
@@ -216,7 +216,8 @@ def _offered(target: LintTarget) -> Iterator[ManipulatorModel]:
 def undriven_controlled_joints(target: LintTarget) -> Iterator[Finding]:
     """RA705 (error): a joint of a group robosuite's controllers drive has no actuator."""
     for robot in _offered(target):
-        undriven = undriven_joints(robot, robot.part_mjspec())
+        mjspec = robot.part_mjspec()
+        undriven = undriven_joints(robot, mjspec)
         if not undriven:
             continue
         yield Finding(
@@ -225,8 +226,8 @@ def undriven_controlled_joints(target: LintTarget) -> Iterator[Finding]:
             subject=type(robot).__name__,
             why=(
                 "robosuite's controllers drive each joint of the groups they control with one actuator, "
-                f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none: "
-                "robosuite refuses the robot"
+                f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none "
+                f"({why_undriven(undriven, mjspec)}): robosuite refuses the robot"
             ),
             fix=(
                 "declare an actuator for each (actuators:), leave the joint out of the arm lists of "

@@ -74,7 +74,7 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
                 JOINT_GROUPS,
                 f"robosuite's controllers drive each joint of the groups they control with one actuator, "
                 f"but {', '.join(undriven)} {'has' if len(undriven) == 1 else 'have'} none "
-                "(a mimic follower?): declare an actuator for each, "
+                f"({why_undriven(undriven, mjspec)}): declare an actuator for each, "
                 "or set robosuite.enabled: false for a robot robosuite cannot drive",
             )
         )
@@ -117,11 +117,24 @@ def drive_as_declared(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
 
 
 def undriven_joints(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
-    """The robot's own joints (unprefixed) in groups robosuite's controllers drive that no actuator of
-    ``mjspec`` (the robot's part spec) drives."""
-    targets = {actuator.target for actuator in mjspec.actuators}
+    """The robot's own joints (unprefixed) in groups robosuite's controllers drive that no named actuator
+    of ``mjspec`` (the robot's part spec) drives: robosuite finds each actuator by its name, so an
+    unnamed one drives nothing for it (its controller would get no actuator for the joint)."""
+    targets = {actuator.target for actuator in mjspec.actuators if actuator.name}
     driven = DRIVEN_GROUPS[robot_type_name(type(robot))]
     return [j for j in robot.joint_names if robot.group_of(j) in driven and j not in targets]
+
+
+def why_undriven(undriven: list[str], mjspec: mujoco.MjSpec) -> str:
+    """Why the ``undriven`` joints may have no actuator robosuite finds: unnamed actuators on them, or
+    (none there) a URDF ``<mimic>`` follower, which no actuator drives."""
+    unnamed = [j for j in undriven if any(a.target == j and not a.name for a in mjspec.actuators)]
+    if not unnamed:
+        return "a mimic follower?"
+    return (
+        f"the actuators of {', '.join(unnamed)} have no name, and robosuite finds an actuator by its name: "
+        "name each in the MJCF, or through mjcf_fixes with set: {name: ...}"
+    )
 
 
 def part_file(part: PartModel) -> str:

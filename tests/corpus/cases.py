@@ -83,10 +83,6 @@ PANDA_HOME = (
     "the home pose new guesses (qpos0, joint4 moved to the middle of its range) puts the hand 41 mm into "
     "link5: new marks it decide: (the bodies overlap), and the overlap pushes the wrist 0.38 rad away"
 )
-ALOHA_LIFT = (
-    "robosuite's Lift fails on the ViperX arm of gym-aloha's scene (operands could not be broadcast "
-    "together with shapes (6,) (0,) (0,)): not yet traced"
-)
 TALOS_MIMIC = ".*<mimic> of joint 'gripper_"
 LAIKAGO_TOES = ".*the <visual> of link 'toe"
 
@@ -246,7 +242,5 @@ CASES: tuple[Case, ...] = (
         "gym_aloha",
         "gym-aloha",
         "assets/bimanual_viperx_transfer_cube.xml",
-        defects={"lift": ALOHA_LIFT},
-        tracebacks=("lift",),
     ),
 )

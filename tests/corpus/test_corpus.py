@@ -8,11 +8,13 @@ which the comparison leaves out, are listed in :data:`CONVENTIONS`.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import mujoco
 import numpy as np
 import pytest
+import yaml
 
 import assembler
 from assembler.errors import AssemblerError
@@ -285,3 +287,31 @@ def test_the_arm_runs_200_steps_of_robosuites_lift(case: Case, corpus: Corpus) -
     qpos = env.sim.data.qpos
     assert np.all(np.isfinite(qpos)) and not np.allclose(qpos, start)
     env.close()
+
+
+@pytest.mark.filterwarnings("ignore::assembler.errors.AssemblerWarning")
+def test_an_arm_whose_actuators_are_unnamed_is_refused_by_robosuite_in_one_line_naming_them(
+    corpus: Corpus, tmp_path: Path
+) -> None:
+    """gym-aloha's ViperX without the names ``new`` gives its servos: robosuite finds an actuator by its
+    name, so the bridge refuses the arm, saying so, where robosuite's Lift would fail at its first step
+    (numpy: operands could not be broadcast together with shapes (6,) (0,) (0,))."""
+    robosuite = pytest.importorskip("robosuite", reason="robosuite is not installed (the robosuite extra)")
+    bridge = pytest.importorskip("assembler.robosuite")
+    (case,) = [c for c in CASES if c.id == "aloha_viperx"]
+    fields = yaml.safe_load(corpus.spec(case).read_text())
+    fields["name"] = "AlohaUnnamedServos"
+    fields["mjcf_fixes"] = [fix for fix in fields["mjcf_fixes"] if "name" not in fix.get("set", {})]
+    spec = tmp_path / "aloha_unnamed_servos.yaml"
+    spec.write_text(yaml.safe_dump(fields, sort_keys=False))
+    bridge.register(str(spec))
+    with pytest.raises(AssemblerError) as refused:
+        robosuite.make(
+            "Lift",
+            robots="AlohaUnnamedServos",
+            has_renderer=False,
+            has_offscreen_renderer=False,
+            use_camera_obs=False,
+        )
+    (line,) = str(refused.value).splitlines()
+    assert "vx300s_left/waist" in line and "have no name, and robosuite finds an actuator by its name" in line
