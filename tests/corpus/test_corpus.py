@@ -49,11 +49,23 @@ CONTINUOUS_LIMITS = (
     "format says a continuous joint is"
 )
 
+MESH_STEMS = (
+    "MuJoCo 3.9's URDF import names a mesh after its file's stem and gives a later <mesh filename> of a stem "
+    "already taken the first file's mesh, whatever its folder (xml_urdf.cc, mjXURDF::Geom: same name and "
+    "scale, one mesh); MuJoCo 4.0's import loads it as a mesh of its own (<stem>1), and our read hands MuJoCo "
+    "such a file as a copy of its own name on every version (assembler/urdf/meshes.py)"
+)
+
 ON_MUJOCO_3_9 = {
-    "talos": "on MuJoCo 3.9 MuJoCo's own URDF load gives Talos' gripper base mesh geoms other sizes than "
-    "our build (up to 0.164 m apart); equal on 4.0. Not yet traced (issue 34)",
-    "panda_pybullet": "on MuJoCo 3.9 our build of pybullet's Panda has one equality (the fingers' <mimic>) "
-    "and MuJoCo's own URDF load none; equal on 4.0. Not yet traced (issue 34)",
+    "talos": f"{MESH_STEMS}: on MuJoCo 3.9 the geoms of gripper_left_base_link and gripper_right_base_link "
+    "(meshes/gripper/base_link.STL, base_link_collision.STL) take the torso's meshes/torso/base_link.STL and "
+    "base_link_collision.STL, up to 0.164 m larger",
+    "panda_pybullet": "MuJoCo 3.9's URDF import ignores <mimic> (panda_finger_joint2's <mimic "
+    'joint="panda_finger_joint1"/>), so its load has no equality; MuJoCo 4.0\'s import and our read '
+    "(assembler/urdf/postprocess.py add_mimics, on every version) make it the joint equality "
+    "panda_finger_joint2 = 0 + 1 * panda_finger_joint1 (polycoef 0 1 0 0 0), as the URDF format says. And "
+    f"{MESH_STEMS}: on MuJoCo 3.9 the collision geoms of panda_link1-6, panda_hand and the fingers "
+    "(meshes/collision/link1.obj, ...) take the visual meshes (meshes/visual/link1.obj, ...)",
     "racecar": CONTINUOUS_LIMITS,
     "r2d2": CONTINUOUS_LIMITS,
 }
