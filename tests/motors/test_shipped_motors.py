@@ -1,6 +1,7 @@
 """The shipped motor catalogue: every motor spec validates and cites its source, and the shipped
 Unitree robots get the armature mjlab's constants give (computed here from the numbers mjlab cites,
-with mjlab's own formulas), and their motors' torque limits as force ranges."""
+with mjlab's own formulas), and their motors' torque limits as force ranges; the maxon RE 25 with its
+GP 26 B gearhead gives a joint the armature and limit its catalogue pages give."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ from assembler.models.motor_table import MOTORS
 from assembler.registry.lookup import registered_class, robot_class
 from assembler.spec.spec_files import load_motors, read_spec_files
 from assembler.urdf.packages import package_folders
+from tests.motors.rigs import Write, motor_robot
 
 NEEDS_URDFS = pytest.mark.skipif(
     not package_folders("example-robot-data"), reason="the shipped Go2 and G1 read example-robot-data's URDFs"
@@ -87,6 +89,24 @@ def test_the_m107_motors_give_the_equivalent_moment_their_table_gives(name: str)
 
 def test_every_shipped_motor_is_found_by_name() -> None:
     assert {loaded.spec.name for loaded in SHIPPED} <= set(MOTORS.names())
+
+
+# maxon's catalogue pages (specs/motors/maxon_re25_gp26b.yaml): the RE 25's rotor inertia (118752) and the
+# GP 26 B's mass inertia referred to the motor shaft, its reduction and intermittent output torque (144039).
+RE25_ROTOR_INERTIA = 10.8e-7  # kg m²: 10.8 g cm²
+GP26B_INERTIA_AT_MOTOR = 0.4e-7  # kg m²: 0.4 g cm²
+GP26B_RATIO, GP26B_INTERMITTENT_TORQUE = 84, 1.9
+
+
+def test_the_maxon_re25_with_its_gp26b_gives_the_joint_both_inertias_through_84_squared(write: Write) -> None:
+    robot = motor_robot(write, "{match: spin, motor: MaxonRE25GP26B, control: torque}")
+    model = robot.get_model()
+    # both inertias are at the motor shaft: each is seen at the joint times the ratio squared
+    armature = (RE25_ROTOR_INERTIA + GP26B_INERTIA_AT_MOTOR) * GP26B_RATIO**2
+    assert model.joint(robot.naming_prefix + "spin").armature[0] == pytest.approx(armature, rel=1e-12)
+    # the gearhead's output rating, not the 12 N·m the motor's stall torque would give through it
+    limit = GP26B_INTERMITTENT_TORQUE
+    assert model.actuator(robot.naming_prefix + "spin").forcerange.tolist() == pytest.approx([-limit, limit])
 
 
 @NEEDS_URDFS
