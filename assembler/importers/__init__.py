@@ -148,7 +148,9 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
     chosen: Kind = kind or guessed_kind
     repaired = []
     if file.format == "mjcf":  # read again with them: the jaw's cut and the arm's drive read the names
-        repaired = actuator_fixes(file, fixes, tree.arm if chosen == "robot" and tree.limbs is None else ())
+        repaired = actuator_fixes(
+            file, fixes, tree.arm_joints if chosen == "robot" and tree.limbs is None else ()
+        )
         if repaired:
             file = read_model_file(model_path, [*fixes, *(each.fix for each in repaired)])
     load_shipped_specs()

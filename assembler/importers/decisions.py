@@ -60,8 +60,11 @@ def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
     return entry.decide("set init_qpos to the pose the robot should start each episode in")
 
 
-def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = False) -> Entry:
-    """How the arm enters robosuite: standing on a pedestal, its position servos made motors."""
+def robosuite_entry(
+    file: ModelFile, arm: tuple[str, ...], servos_added: bool = False, arms: tuple[str, ...] = ("right",)
+) -> Entry:
+    """How the robot enters robosuite: standing on a pedestal, its position servos made motors; ``arm``:
+    the joints of its ``arms``."""
     model, options, entry = file.model, {"stand_in_base": STAND_IN_BASE}, Entry("robosuite", {})
     servos = [a for name, a in actuated_joints(model).items() if name in arm and is_bridge_servo(model, a)]
     if servos_added:
@@ -80,13 +83,21 @@ def robosuite_entry(file: ModelFile, arm: tuple[str, ...], servos_added: bool = 
         bare = [name for name, a in zip(bare, servos, strict=True) if not has_force_range(model, a)]
         if bare:
             entry.decide(f"give the servos {_short(bare)} a forcerange in the model (actuators: in the spec)")
-    if "right_center" not in {model.site(s).name for s in range(model.nsite)}:
+    sites = {model.site(s).name for s in range(model.nsite)}
+    missing = [f"{side}_center" for side in arms if f"{side}_center" not in sites]
+    if len(arms) == 1 and missing:
         entry.guess(
             "the file has no site right_center, the arm's origin robosuite's controllers read: robosuite's "
             "bridge adds one on the body the arm's first link hangs from (lint RA704)"
         )
+    elif missing:
+        entry.guess(
+            f"the file has no site {' or '.join(missing)}, the arms' origins robosuite's controllers read: "
+            "robosuite's bridge adds each on the body its arm's first link hangs from (lint RA704)"
+        )
+    what = "arm" if len(arms) == 1 else "robot"
     entry.guess(
-        f"robosuite stands the arm on the {STAND_IN_BASE} (without one it would stand on the floor, "
+        f"robosuite stands the {what} on the {STAND_IN_BASE} (without one it would stand on the floor, "
         "below robosuite's tables); set default_base to build it on a base everywhere"
     )
     entry.value = options
@@ -131,27 +142,34 @@ def file_joint_values() -> Entry:
 
 
 def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[Entry]:
-    """The fields of an arm's spec after its name and file; ``jaw``: the file's hand, cut from the arm
-    and made the gripper of that name (:mod:`~assembler.importers.jaws`)."""
+    """The fields of an arm's (or a bimanual robot's) spec after its name and file; ``jaw``: the file's
+    hand, cut from the arm and made the gripper of that name (:mod:`~assembler.importers.jaws`)."""
     entries = balance_entry(file)
+    entries += _two_arms(file, tree) if tree.arms else _one_arm(file, tree, jaw)
+    own = tuple(name for name in tree.joints if jaw is None or name not in jaw.joints)  # the jaw's go with it
+    pose = init_qpos_entry(file, own)
+    entries += [pose] if pose else []
+    entries.append(file_joint_values())
+    actuators = actuator_entry(file, own)
+    entries += [actuators] if actuators else []
     entries.append(
+        robosuite_entry(file, tree.arm_joints, actuators is not None, tuple(tree.arms) or ("right",))
+    )
+    return entries
+
+
+def _one_arm(file: ModelFile, tree: Tree, jaw: Jaw | None) -> list[Entry]:
+    """Morphology, end effector, joint groups and gripper of a robot with one arm."""
+    entries = [
         Entry("morphology", "manipulator").guess(
             f"one arm of {len(tree.arm)} joints; a bimanual robot needs arm_type: bimanual and a left arm "
             "in joint_groups, a humanoid morphology: humanoid"
         )
-    )
+    ]
     entries += _end_effector(tree) if jaw is None else _cut_hand(jaw)
-    groups: dict[str, list[str]] = {"right": list(tree.arm)}
-    for part in ("base", "torso", "head"):
-        if getattr(tree, part):
-            groups[part] = list(getattr(tree, part))
-    joints = Entry("joint_groups", groups).guess(
-        "the arm is the chain of joints from the root to the deepest link"
-        + "".join(
-            f"; {part}: {_short(list(getattr(tree, part)))}"
-            for part in ("base", "torso", "head")
-            if getattr(tree, part)
-        )
+    parts, said = _parts(tree)
+    joints = Entry("joint_groups", {"right": list(tree.arm), **parts}).guess(
+        f"the arm is the chain of joints from the root to the deepest link{said}"
     )
     if tree.fingers and jaw is None:
         joints.decide(
@@ -161,21 +179,97 @@ def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[E
         )
     entries.append(joints)
     entries.append(_default_gripper(file, tree, jaw))
-    own = tuple(name for name in tree.joints if jaw is None or name not in jaw.joints)  # the jaw's go with it
-    pose = init_qpos_entry(file, own)
-    entries += [pose] if pose else []
-    entries.append(file_joint_values())
-    actuators = actuator_entry(file, own)
-    entries += [actuators] if actuators else []
-    entries.append(robosuite_entry(file, tree.arm, servos_added=actuators is not None))
     return entries
 
 
-def _end_effector(tree: Tree) -> list[Entry]:
-    if tree.eef_by_name:
-        how = "the body named like a hand below the last arm joint"
+def _parts(tree: Tree) -> tuple[dict[str, list[str]], str]:
+    """The joint groups besides the arms (base, torso, head) and what they hold, as words."""
+    groups = {part: list(getattr(tree, part)) for part in ("base", "torso", "head") if getattr(tree, part)}
+    return groups, "".join(f"; {part}: {_short(joints)}" for part, joints in groups.items())
+
+
+def _two_arms(file: ModelFile, tree: Tree) -> list[Entry]:
+    """Morphology, end effectors, joint groups and grippers of a robot with two arms on one root body
+    (:func:`~assembler.importers.tree.read_tree`): Baxter, YuMi, a bimanual torso."""
+    right, left = tree.arms["right"], tree.arms["left"]
+    how = "by their joints' names" if tree.arms_by_name else "by the side of the root each lies on (+y: left)"
+    entries = [
+        Entry("morphology", "manipulator").guess(
+            f"two arms on one root body, of {len(right.joints)} and {len(left.joints)} joints, told right "
+            f"and left {how}; a humanoid (standing on legs of its own) is morphology: humanoid"
+        ),
+        Entry("arm_type", "bimanual").guess(
+            "a right and a left arm, driven as one robot (robosuite's Baxter)"
+        ),
+    ]
+    eef = Entry("eef_bodies", {side: arm.eef_body for side, arm in tree.arms.items()})
+    hows = {side: _eef_how(arm.eef_by_name, bool(arm.fingers)) for side, arm in tree.arms.items()}
+    if hows["right"] == hows["left"]:
+        eef.guess(f"on each arm {hows['right']}; grippers are mounted here")
     else:
-        how = "the body where the fingers branch off" if tree.fingers else "the last link of the arm's chain"
+        eef.guess(f"right: {hows['right']}; left: {hows['left']}; grippers are mounted here")
+    for side, arm in tree.arms.items():
+        if arm.grip_site:
+            eef.guess(f"the {side} arm's grip frame is the site {arm.grip_site}")
+    entries.append(eef)
+    parts, said = _parts(tree)
+    joints = Entry("joint_groups", {"right": list(right.joints), "left": list(left.joints), **parts}).guess(
+        f"each arm is its side's chain of joints from the root to its deepest link{said}"
+    )
+    if tree.fingers:
+        joints.decide(
+            f"{_short(tree.fingers)} move the hands that are part of this file: they are listed in no group, "
+            "so that robosuite's arm controllers do not drive them; list each hand's under its arm's side "
+            "if it should"
+        )
+    entries.append(joints)
+    entries.append(_two_grippers(file, tree))
+    return entries
+
+
+def _two_grippers(file: ModelFile, tree: Tree) -> Entry:
+    """Each arm's gripper: none on a hand of the file's own (``new`` cuts a jaw only from an arm's file
+    with one arm), else the shipped gripper."""
+    hands = {side: arm.fingers for side, arm in tree.arms.items() if arm.fingers}
+    fixed = {side: _fixed_fingers(file.model, arm.eef_body) for side, arm in tree.arms.items()}
+    grippers = {side: None if side in hands or fixed[side] else DEFAULT_GRIPPER for side in tree.arms}
+    entry = Entry("default_grippers", grippers)
+    if hands:
+        said = "; ".join(f"{side}: {_short(joints, 3)}" for side, joints in hands.items())
+        roots = ", ".join(tree.arms[side].eef_body for side in hands)
+        entry.decide(
+            f"each hand is the file's own ({said}): no gripper is added on top of it, and its fingers stay "
+            "in the arm without a robosuite action (new cuts a jaw into a gripper only from a file of one "
+            f"arm). To give each hand an action: a gripper spec per hand taking it from this file "
+            f"(root_body: {roots}), the hands under remove_bodies, the arms' eef_bodies their parents and "
+            "the grippers' names here; or any registered gripper (assembler list grippers) in a hand's "
+            "place"
+        )
+    for side, names in fixed.items():
+        if names and side not in hands:
+            entry.decide(
+                f"the {side} arm has its own hand, fixed ({_short(names, 3)}: bodies named like fingers "
+                "below the end effector, without joints): no gripper is added on top of it"
+            )
+    bare = [side for side, gripper in grippers.items() if gripper]
+    if bare:
+        where = "either arm" if len(bare) == 2 else f"the {bare[0]} arm"
+        entry.guess(
+            f"no jaw on {where} in the file: the shipped {DEFAULT_GRIPPER}, so robosuite's tasks can grasp; "
+            "any registered gripper (assembler list grippers) or null"
+        )
+    return entry
+
+
+def _eef_how(by_name: bool, fingers: bool) -> str:
+    """How an end-effector body was found (:func:`~assembler.importers.tree.read_tree`), as words."""
+    if by_name:
+        return "the body named like a hand below the last arm joint"
+    return "the body where the fingers branch off" if fingers else "the last link of the arm's chain"
+
+
+def _end_effector(tree: Tree) -> list[Entry]:
+    how = _eef_how(tree.eef_by_name, bool(tree.fingers))
     eef = Entry("eef_bodies", {"right": tree.eef_body}).guess(f"{how}; grippers are mounted here")
     if tree.grip_site:
         eef.guess(f"the file's grip frame is the site {tree.grip_site}")

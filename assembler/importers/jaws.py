@@ -22,9 +22,10 @@ from assembler.importers.tree import SLIDE, Tree, subtree
 
 def jaw_of(model: mujoco.MjModel, tree: Tree, name: str) -> Jaw | None:
     """The jaw of an arm's file that can be cut from the arm, as the gripper ``name``; None for a legged
-    robot, a file without fingers, a hand that turns on a joint of its own (cutting it would cut an
-    arm joint), or a jaw whose actuators in the file have no names (its actions could not name them)."""
-    if tree.limbs is not None or not tree.fingers or not tree.eef_body:
+    or bimanual robot (``new`` writes one jaw's gripper spec, not one per arm), a file without fingers, a
+    hand that turns on a joint of its own (cutting it would cut an arm joint), or a jaw whose actuators
+    in the file have no names (its actions could not name them)."""
+    if tree.limbs is not None or tree.arms or not tree.fingers or not tree.eef_body:
         return None
     hand = model.body(tree.eef_body).id
     parent = int(model.body_parentid[hand])

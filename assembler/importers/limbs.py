@@ -6,8 +6,10 @@ A fixed-base arm has none (its root is its lowest body) and a wheel is one joint
 joint on the way to one foot is a leg joint; on the way to several (a waist above both legs) it moves
 the torso. What moves and is no leg is an arm, and an arm's side is its name's (``left``, ``l_``...)
 (or a mirror twin's: the CMU humanoid's ``lhumerusrx`` and ``rhumerusrx``) or, failing that, the side
-of the root it lies on: the left foot's side (+y when the feet do not say, as robots face +x). Every
-answer is a guess that :mod:`assembler.importers.decisions` writes with its reason.
+of the root it lies on: the left foot's side (+y when the feet do not say, as robots face +x). A robot
+without feet whose joints split so into two serial chains (Baxter, YuMi) has two arms
+(:func:`two_arms`). Every answer is a guess that :mod:`assembler.importers.decisions` writes with its
+reason.
 """
 
 from __future__ import annotations
@@ -112,17 +114,24 @@ def _end(model: mujoco.MjModel, leaves: list[int]) -> int:
     return max(shared, key=lambda b: len(_path(model, b, 0))) if shared else leaves[0]
 
 
-def read_limbs(model: mujoco.MjModel, root: int, skip: set[int]) -> Limbs | None:
-    """The legs, feet and arms of the robot under body ``root``, or None when it has fewer than two feet
-    (an arm, a hand, a wheeled base). ``skip``: joints already told (fingers, head, mobile base)."""
+def _posed(model: mujoco.MjModel, root: int) -> tuple[mujoco.MjData, list[int], set[int], float]:
+    """The file's zero pose, the bodies under ``root`` (with it), the bodies among them with children,
+    and the robot's height (0 for a flat robot)."""
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
     bodies = [b for b in range(1, model.nbody) if root in (b, *_path(model, b, 0))]
     parents = {int(model.body_parentid[b]) for b in bodies}
     heights = data.xpos[bodies, 2]
-    span = float(heights.max() - heights.min())
+    return data, bodies, parents, float(heights.max() - heights.min())
+
+
+def read_limbs(model: mujoco.MjModel, root: int, skip: set[int]) -> Limbs | None:
+    """The legs, feet and arms of the robot under body ``root``, or None when it has fewer than two feet
+    (an arm, a hand, a wheeled base). ``skip``: joints already told (fingers, head, mobile base)."""
+    data, bodies, parents, span = _posed(model, root)
     if span <= 0:
         return None
+    heights = data.xpos[bodies, 2]
     top, low = float(data.xpos[root, 2]), float(heights.min())
     feet = [
         b
@@ -186,3 +195,34 @@ def _arms(
         below = [b for b in bodies if b not in parents and last in (b, *_path(model, b, 0))]
         hands[side] = _end(model, below) if below else last
     return sides, hands, by_name
+
+
+def serial_chain(model: mujoco.MjModel, joints: list[int]) -> list[int]:
+    """Those of ``joints`` on the way from the world to the deepest of them: an arm's serial chain."""
+    deepest = max((int(model.jnt_bodyid[j]) for j in joints), key=lambda b: len(_path(model, b, 0)))
+    on_way = set(_path(model, deepest, 0))
+    return [j for j in joints if int(model.jnt_bodyid[j]) in on_way]
+
+
+def two_arms(model: mujoco.MjModel, root: int, skip: set[int]) -> tuple[dict[str, list[int]], bool] | None:
+    """A robot without feet whose moving joints under ``root`` (but ``skip``: base, head, torso,
+    fingers) split into a right and a left arm, told as :func:`_arms` tells a humanoid's (robots face
+    +x, so +y is their left): each side's joints and whether their names told the sides. None unless
+    each side has at least :data:`MIN_ARM` joints on a serial chain and neither chain runs through the
+    other (one arm whose joints lie on both sides of its root, a UR5's, is no pair)."""
+    data, bodies, parents, _ = _posed(model, root)
+    rest = [j for j in _moving(model, bodies) if j not in skip]
+    size = float(np.ptp(data.xpos[bodies], axis=0).max())  # an arm's height may be 0 (arms level)
+    if size <= 0 or not rest:
+        return None
+    sides, _, by_name = _arms(model, data, root, bodies, parents, rest, np.array([0.0, size, 0.0]))
+    if set(sides) != {"right", "left"}:
+        return None
+    chains = {side: serial_chain(model, joints) for side, joints in sides.items()}
+    if any(len(chain) < MIN_ARM for chain in chains.values()):
+        return None
+    for side, other in (("right", "left"), ("left", "right")):  # a chain's last joint is its deepest
+        deepest = set(_path(model, int(model.jnt_bodyid[chains[other][-1]]), 0))
+        if any(int(model.jnt_bodyid[j]) in deepest for j in chains[side]):
+            return None
+    return sides, by_name

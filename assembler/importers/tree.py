@@ -1,16 +1,17 @@
 """What the kinematic tree of a compiled model says about a robot: which joints are fingers, which
-move the whole robot, the arm's chain, the end-effector body and a grip frame. Every answer is a
+move the whole robot, the arm's chain (or two arms' on one root body), the end-effector body and a
+grip frame. Every answer is a
 guess from names and structure; :mod:`assembler.importers.decisions` says why beside it.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 
-from assembler.importers.limbs import Limbs, read_limbs
+from assembler.importers.limbs import Limbs, read_limbs, serial_chain, two_arms
 
 FINGER_WORDS = re.compile(r"finger|gripper|jaw|claw|knuckle|thumb|grip", re.IGNORECASE)
 """Joint names of a jaw or fingers (robosuite's grippers and most vendors' files name them so)."""
@@ -46,6 +47,21 @@ SLIDE = int(mujoco.mjtJoint.mjJNT_SLIDE)
 
 
 @dataclass(frozen=True)
+class ArmChain:
+    """One arm of a bimanual robot, by MJCF name."""
+
+    joints: tuple[str, ...]
+    fingers: tuple[str, ...]
+    """Its hand's joints: those named like fingers below the arm, and every joint below where they
+    branch off."""
+    eef_body: str
+    """Where its hand's fingers branch off, else a body named like a hand below it, else its last link."""
+    eef_by_name: bool
+    grip_site: str | None
+    """A site below the end effector named like a grip point, if any."""
+
+
+@dataclass(frozen=True)
 class Tree:
     """The kinematic tree's guesses, by MJCF name (joints in MuJoCo's order)."""
 
@@ -64,6 +80,16 @@ class Tree:
     without feet (an arm, a wheeled base)."""
     wheels: tuple[str, ...] = ()
     """Wheels and the hinges steering them (also in ``base``: they move the whole robot)."""
+    arms: dict[str, ArmChain] = field(default_factory=dict)
+    """A fixed-base robot's ``right`` and ``left`` arm when it has two (then ``arm``, ``eef_body``,
+    ``eef_by_name`` and ``grip_site`` are its right arm's, ``fingers`` both hands'); empty otherwise."""
+    arms_by_name: bool = False
+    """True when the two arms' sides come from their joints' names, False from where they lie."""
+
+    @property
+    def arm_joints(self) -> tuple[str, ...]:
+        """Every arm joint: both arms' of a bimanual robot, else the one arm's."""
+        return tuple(n for arm in self.arms.values() for n in arm.joints) if self.arms else self.arm
 
 
 def _name(model: mujoco.MjModel, kind: mujoco.mjtObj, index: int) -> str:
@@ -110,15 +136,21 @@ def subtree(model: mujoco.MjModel, top: int) -> list[int]:
     return [b for b in range(1, model.nbody) if top in _ancestors(model, b)]
 
 
-def _finger_joints(model: mujoco.MjModel, joints: list[int]) -> list[int]:
-    """Joints named like fingers (or moving a body named so), and every joint below the first body such
-    a joint hangs from."""
-    named = [
+def _named_fingers(model: mujoco.MjModel, joints: list[int]) -> list[int]:
+    """Joints named like fingers, or moving a body named so."""
+    return [
         j
         for j in joints
         if FINGER_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_JOINT, j))
         or FINGER_BODY_WORDS.search(_name(model, mujoco.mjtObj.mjOBJ_BODY, int(model.jnt_bodyid[j])))
     ]
+
+
+def _finger_joints(model: mujoco.MjModel, joints: list[int], named: list[int] | None = None) -> list[int]:
+    """``named`` (by default the joints named like fingers, or moving a body named so), and every joint
+    below the first body such a joint hangs from: one hand."""
+    if named is None:
+        named = _named_fingers(model, joints)
     if not named:
         return []
     hand = _common_ancestor(model, [int(model.body_parentid[model.jnt_bodyid[j]]) for j in named])
@@ -167,6 +199,9 @@ def read_tree(model: mujoco.MjModel, hand: bool) -> Tree:
         return legged
     wheels = [j for j in _wheel_joints(model, joints) if j not in base]
     base += wheels  # wheels move the whole robot, as a mobile base's joints do
+    bimanual = _two_arm_tree(model, joints, names, roots, base, wheels)
+    if bimanual is not None:
+        return bimanual
     fingers = _finger_joints(model, [j for j in joints if j not in base])
     parts = {
         part: [j for j in joints if j not in base and j not in fingers and words.search(names[j])]
@@ -219,4 +254,65 @@ def _legged_tree(
         eef_by_name=False,
         grip_site=_grip_site(model, model.body(eef).id) if eef else None,
         limbs=limbs,
+    )
+
+
+def _two_arm_tree(
+    model: mujoco.MjModel,
+    joints: list[int],
+    names: dict[int, str],
+    roots: list[int],
+    base: list[int],
+    wheels: list[int],
+) -> Tree | None:
+    """The tree of a robot without feet with two arms under its root body
+    (:func:`~assembler.importers.limbs.two_arms`), or None; ``base``: the joints moving the whole robot
+    (``wheels`` among them). Each arm's hand is the fingers below it (never one hand over both arms);
+    what moves and is no arm, hand, head or base moves both arms: the torso. A floating robot (a free
+    joint) whose feet were not found is left to the one-arm guess, which says how many joints it took."""
+    if any(int(model.jnt_type[j]) == FREE for j in range(model.njnt)):
+        return None
+    root = max(roots, key=lambda top: (sum(int(model.body_jntnum[b]) for b in subtree(model, top)), -top))
+    named = _named_fingers(model, [j for j in joints if j not in base])
+    parts = {
+        part: [j for j in joints if j not in base and j not in named and words.search(names[j])]
+        for part, words in PART_WORDS.items()
+    }
+    found = two_arms(model, root, skip={*base, *named, *parts["torso"], *parts["head"]})
+    if found is None:
+        return None
+    sides, by_name = found
+    arms: dict[str, ArmChain] = {}
+    fingers: set[int] = set()
+    for side in ("right", "left"):
+        bodies = {int(model.jnt_bodyid[j]) for j in sides[side]}
+        own = [j for j in named if bodies & set(_ancestors(model, int(model.jnt_bodyid[j])))]
+        hand = _finger_joints(model, [j for j in joints if j not in base], own) if own else []
+        arm = [j for j in sides[side] if j not in hand]
+        eef, eef_by_name = _eef_body(model, serial_chain(model, arm), hand)
+        fingers |= {*hand, *own}
+        arms[side] = ArmChain(
+            joints=tuple(names[j] for j in arm),
+            fingers=tuple(names[j] for j in hand),
+            eef_body=_name(model, mujoco.mjtObj.mjOBJ_BODY, eef),
+            eef_by_name=eef_by_name,
+            grip_site=_grip_site(model, eef),
+        )
+    fingers |= set(named)  # fingers on no arm (a finger-named joint on the torso) are a hand's too
+    told = {*base, *fingers, *parts["head"], *(j for side in sides.values() for j in side)}
+    torso = [j for j in joints if j not in told]  # named torso, or on the midline between the arms
+    right = arms["right"]
+    return Tree(
+        joints=tuple(names.values()),
+        arm=right.joints,
+        fingers=tuple(names[j] for j in joints if j in fingers),
+        base=tuple(names[j] for j in base),
+        torso=tuple(names[j] for j in torso),
+        head=tuple(names[j] for j in parts["head"]),
+        eef_body=right.eef_body,
+        eef_by_name=right.eef_by_name,
+        grip_site=right.grip_site,
+        wheels=tuple(names[j] for j in wheels),
+        arms=arms,
+        arms_by_name=by_name,
     )
