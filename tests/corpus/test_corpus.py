@@ -164,8 +164,17 @@ def test_a_mobile_base_turns_its_wheels_at_the_commanded_speed_and_holds_the_res
     assert np.all(np.abs(data.qpos[held] - home[held]) < 0.1)
 
 
-JAWS = ("so101", "so101_urdf", "fetch", "metaworld_sawyer", "aloha_viperx", "panda_erd", "panda_pybullet")
-"""Arms whose file holds their own jaw."""
+JAWS = (
+    "so101",
+    "so101_urdf",
+    "fetch",
+    "metaworld_sawyer",
+    "aloha_viperx",
+    "panda_erd",
+    "panda_pybullet",
+    "baxter",
+)
+"""Arms whose file holds their own jaw (Baxter: one on each arm)."""
 
 
 @pytest.mark.parametrize("case", [p for p in _cases("jaw") if p.values[0].id in JAWS])
@@ -175,8 +184,16 @@ def test_a_jaw_in_the_arms_file_is_the_robots_gripper_or_left_out_of_the_arm(
     robot = _part(case, corpus)
     model = robot.get_model()
     jaw = robot.spec.default_grippers.get("right")
-    if jaw is None:  # its hand turns on an arm joint (SO-101's wrist roll): the jaw stays, out of the arm
-        assert [joint for joint in robot.joints if joint not in robot.arm_joints]
+    if jaw is None:  # its hand turns on an arm joint (SO-101's wrist roll), or there are two hands: the
+        # jaws stay, out of the arms, each below its own arm's end effector
+        for arm in robot.arms:
+            hand = robot.eef_name[arm]
+            below = {
+                j
+                for j in robot.joints
+                if hand in _ancestors(model, model.body_parentid[model.joint(j).bodyid[0]])
+            }
+            assert below and not below & set(robot.arm_joints)
         return
     gripper = robot.grippers["right"]
     assert robot.spec.remove_bodies == [gripper.spec.root_body]  # cut from the arm, made the gripper
@@ -185,6 +202,15 @@ def test_a_jaw_in_the_arms_file_is_the_robots_gripper_or_left_out_of_the_arm(
         model.joint(j).name for j in range(model.njnt) if model.joint(j).name.startswith("gripper0_")
     ]
     assert jaw_joints and not set(robot.arm_joints) & set(jaw_joints)
+
+
+def _ancestors(model: mujoco.MjModel, body: int) -> list[str]:
+    """The names of ``body`` and the bodies above it."""
+    names = []
+    while body > 0:
+        names.append(model.body(body).name)
+        body = int(model.body_parentid[body])
+    return names
 
 
 def _pose(model: mujoco.MjModel, root: int) -> tuple[np.ndarray, np.ndarray]:
