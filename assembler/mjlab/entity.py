@@ -9,7 +9,8 @@
 - ``init_state`` holds the home pose joint by joint. mjlab's ``joint_pos=None`` (take the spec's
   keyframe) fails at reset on a float64/float32 mismatch in mjlab 1.6.0, so the pose is always given.
 - The spec's ``mjlab:`` block (:mod:`~assembler.mjlab.task_parts`) adds the IMU and the feet, sets the
-  soft joint-limit factor, the feet's collision settings and the spawn pose; a robot given by name is
+  soft joint-limit factor, the geoms' contact settings (:mod:`~assembler.mjlab.collisions`) and the
+  spawn pose; a robot given by name is
   assembled with the joint rules its spec writes only (robosuite's with ``mjlab.joint_rules: robosuite``)
   and with a free joint or without as ``mjlab.floating`` says.
 """
@@ -35,7 +36,8 @@ from mjlab.sensor import ContactSensorCfg
 
 from assembler.errors import AssemblerError, Problem
 from assembler.mjcf.keyframe import HOME_KEY
-from assembler.mjlab.task_parts import TaskParts, foot_collisions, task_parts
+from assembler.mjlab.collisions import Collisions, collisions
+from assembler.mjlab.task_parts import TaskParts, task_parts
 from assembler.models import RobotModel
 from assembler.registry.instances import assemble, robot_class
 from assembler.spec.schema.joints import JOINT_RULE_ATTRIBUTES
@@ -161,7 +163,9 @@ def mapped_actuators(model: mujoco.MjModel) -> tuple[ActuatorCfg, ...]:
     return tuple(configs)
 
 
-def _spec_fn(robot: RobotModel, keep_actuators: bool, parts: TaskParts) -> Callable[[], mujoco.MjSpec]:
+def _spec_fn(
+    robot: RobotModel, keep_actuators: bool, parts: TaskParts, contacts: Collisions
+) -> Callable[[], mujoco.MjSpec]:
     def spec() -> mujoco.MjSpec:
         copy = robot.mjspec.copy()
         for key in list(copy.keys):
@@ -169,7 +173,7 @@ def _spec_fn(robot: RobotModel, keep_actuators: bool, parts: TaskParts) -> Calla
         if not keep_actuators:
             for actuator in list(copy.actuators):
                 copy.delete(actuator)
-        parts.edit(copy)
+        parts.edit(copy, contacts.unnamed)
         return copy
 
     return spec
@@ -205,13 +209,15 @@ def entity_cfg(
     pos: tuple[float, float, float] | None = None,
 ) -> EntityCfg:
     """The robot (a RobotModel as assembled, or a registered name assembled by :func:`for_mjlab`) as an
-    mjlab ``EntityCfg``: its spec with the IMU and feet its ``mjlab:`` block asks for, its actuators
+    mjlab ``EntityCfg``: its spec with the IMU and feet its ``mjlab:`` block asks for, the contact
+    settings it declares (``collisions``, ``foot_friction``, ``foot_condim``), its actuators
     (``actuators``), its home pose as ``init_state``, the root at ``pos`` when given, else at
     ``mjlab.spawn_pos``, else standing on the floor if it floats (its lowest collision point at z = 0)
     or where the home pose puts it if it is welded."""
     model = for_mjlab(robot) if isinstance(robot, str) else robot
     compiled = model.get_model()
     parts = task_parts(model, compiled)
+    contacts = collisions(model, compiled, parts)
     root, joint_pos = home_joint_positions(compiled)
     actuated = [
         mujoco.mj_id2name(compiled, JOINT, int(compiled.actuator_trnid[a, 0]))
@@ -232,12 +238,12 @@ def entity_cfg(
     if spawn is not None:
         state.pos = spawn
     return EntityCfg(
-        spec_fn=_spec_fn(model, keep_actuators=actuators == "xml", parts=parts),
+        spec_fn=_spec_fn(model, keep_actuators=actuators == "xml", parts=parts, contacts=contacts),
         articulation=EntityArticulationInfoCfg(
             actuators=configs, soft_joint_pos_limit_factor=model.spec.mjlab.soft_joint_pos_limit_factor
         ),
         init_state=state,
-        collisions=foot_collisions(model, compiled, parts),
+        collisions=contacts.configs,
     )
 
 

@@ -18,12 +18,12 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Collection
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 from mjlab.sensor import ContactMatch, ContactSensorCfg
-from mjlab.utils.spec_config import CollisionCfg
 from numpy.typing import NDArray
 
 from assembler.errors import AssemblerError, Problem
@@ -58,8 +58,9 @@ class TaskParts:
     lift: float
     """How far a floating root body is raised to put its lowest point at z = 0 at ``qpos0`` (0: welded)."""
 
-    def edit(self, spec: mujoco.MjSpec) -> None:
-        """Add the IMU site and its sensors and the feet's sites to ``spec`` (a copy of the assembly's)."""
+    def edit(self, spec: mujoco.MjSpec, unnamed: Collection[str] = ()) -> None:
+        """Add the IMU site and its sensors and the feet's sites to ``spec`` (a copy of the assembly's), and
+        name its feet's unnamed collision geoms and the ``unnamed`` ones (``<body>_geom<i>`` names)."""
         if self.lift:
             root = spec.body(self.root)
             root.pos = [root.pos[0], root.pos[1], root.pos[2] + self.lift]
@@ -71,9 +72,11 @@ class TaskParts:
         )
         for body, site, pos in self.feet:
             spec.body(body).add_site(name=site, pos=list(pos), group=5)
-            for place, geom in enumerate(spec.body(body).geoms):  # in the compiled model's order
-                if not geom.name and foot_geom_name(body, place) in self.foot_geoms:
-                    geom.name = foot_geom_name(body, place)
+        wanted = {*self.foot_geoms, *unnamed}
+        for body in spec.bodies:
+            for place, geom in enumerate(body.geoms):  # in the compiled model's order
+                if not geom.name and unnamed_geom_name(body.name, place) in wanted:
+                    geom.name = unnamed_geom_name(body.name, place)
 
     def feet_sensor(self, entity: str = "robot") -> ContactSensorCfg:
         """The feet contact sensor mjlab's velocity task reads (``feet_ground_contact``), as its G1's."""
@@ -90,9 +93,10 @@ class TaskParts:
         )
 
 
-def foot_geom_name(body: str, place: int) -> str:
-    """The name a foot's unnamed geom gets in mjlab's copy of the robot (a URDF's collision geoms have
-    none; mjlab selects geoms by name): its body's name and its place among that body's geoms."""
+def unnamed_geom_name(body: str, place: int) -> str:
+    """The name an unnamed geom (a foot's, or one ``mjlab.collisions`` selects) gets in mjlab's copy of the
+    robot (a URDF's collision geoms have none; mjlab selects geoms by name): its body's name and its place
+    among that body's geoms."""
     return f"{body}_geom{place}"
 
 
@@ -172,7 +176,7 @@ def task_parts(robot: RobotModel, model: mujoco.MjModel) -> TaskParts:
         if not own:
             problems.append(f"mjlab.feet: {body} has no collision geom to stand on")
             continue
-        geoms += [model.geom(g).name or foot_geom_name(body, g - int(model.body_geomadr[b])) for g in own]
+        geoms += [model.geom(g).name or unnamed_geom_name(body, g - int(model.body_geomadr[b])) for g in own]
         low = min(own, key=lambda g: geom_lowest(model, data, g))
         point = data.geom_xpos[low].copy()
         point[2] = geom_lowest(model, data, low)
@@ -189,24 +193,4 @@ def task_parts(robot: RobotModel, model: mujoco.MjModel) -> TaskParts:
         foot_geoms=tuple(geoms),
         lowest=lowest,
         lift=lift,
-    )
-
-
-def foot_collisions(robot: RobotModel, model: mujoco.MjModel, parts: TaskParts) -> tuple[CollisionCfg, ...]:
-    """mjlab's collision settings for the feet's geoms (``mjlab.foot_friction``, ``foot_condim``): their own
-    contype and conaffinity, priority 1; none when the spec sets neither."""
-    options = robot.spec.mjlab
-    if not parts.foot_geoms or (options.foot_friction is None and options.foot_condim is None):
-        return ()
-    exact = {re.escape(g): model.geom(g) for g in parts.foot_geoms}
-    return (
-        CollisionCfg(
-            geom_names_expr=tuple(exact),
-            contype={k: int(g.contype[0]) for k, g in exact.items()},
-            conaffinity={k: int(g.conaffinity[0]) for k, g in exact.items()},
-            condim=options.foot_condim or {k: int(g.condim[0]) for k, g in exact.items()},
-            priority=1,
-            friction=None if options.foot_friction is None else (options.foot_friction,),
-            disable_other_geoms=False,
-        ),
     )

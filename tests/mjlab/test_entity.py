@@ -30,11 +30,14 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
     from mjlab.envs.mdp.actions import JointPositionActionCfg
     from mjlab.scene import SceneCfg
 
+    from assembler.cli import main
     from assembler.errors import AssemblerError
+    from assembler.files.paths import display_path
     from assembler.mjlab import entity_cfg, home_joint_positions, mapped_actuators
     from assembler.registry.catalog import register_specs
     from assembler.registry.instances import assemble
     from assembler.urdf.packages import package_folders
+    from tests.importers.test_limbs import QUADRUPED
 
 ENVS = 8
 
@@ -151,3 +154,69 @@ def test_the_docs_mjlab_example_runs_and_prints_what_it_says(capsys: pytest.Capt
     printed = capsys.readouterr().out.splitlines()[-1]
     assert printed == "torch.Size([8, 9])"
     assert f'print(env.scene["robot"].data.joint_pos.shape)  # {printed}' in example
+
+
+def _docs_feet_only_spec() -> str:
+    """docs/gpu.md's example of ``mjlab.collisions``: mjlab's feet-only setting for the shipped biped."""
+    docs = (Path(__file__).parents[2] / "docs" / "gpu.md").read_text()
+    (example,) = [b for b in re.findall(r"```yaml\n(.*?)```", docs, flags=re.DOTALL) if "collisions:" in b]
+    return example
+
+
+def test_the_docs_feet_only_collisions_leave_only_the_feet_touching_the_terrain(tmp_path: Path) -> None:
+    spec = tmp_path / "feet_only.yaml"
+    spec.write_text(_docs_feet_only_spec())
+    register_specs(spec)
+    model = Entity(entity_cfg("BipedFeetOnly")).spec.compile()  # the robot as mjlab builds it
+    feet = {"robot0_l_foot_col", "robot0_r_foot_col"}
+    for geom in range(model.ngeom):
+        name = model.geom(geom).name
+        if name in feet:  # the terrain's contype 1 meets their conaffinity 1; their contype 0 meets no foot
+            assert (model.geom_contype[geom], model.geom_conaffinity[geom]) == (0, 1), name
+            assert (model.geom_condim[geom], model.geom_priority[geom]) == (3, 1), name
+            # foot_friction, applied after the list, sets the sliding friction; the MJCF's other two stay
+            np.testing.assert_allclose(model.geom_friction[geom], [0.6, 0.005, 0.0001])
+        else:
+            assert (model.geom_contype[geom], model.geom_conaffinity[geom]) == (0, 0), name
+    assert len(feet & {model.geom(g).name for g in range(model.ngeom)}) == 2
+
+
+NO_MATCH_SPEC = """\
+name: BipedTypo
+extends: BipedFree
+mjlab:
+  collisions:
+    - geoms: ["[lr]_foot_col", "l_fot_col"]
+      condim: 3
+"""
+
+
+def test_a_collision_pattern_that_matches_no_geom_is_one_line_at_its_spec_line(tmp_path: Path) -> None:
+    spec = tmp_path / "typo.yaml"
+    spec.write_text(NO_MATCH_SPEC)
+    register_specs(spec)
+    with pytest.raises(AssemblerError) as caught:
+        entity_cfg("BipedTypo")
+    assert str(caught.value) == (
+        f"{display_path(spec)}:5:32: mjlab.collisions[0].geoms[1]: 'l_fot_col' matches no geom of the robot "
+        "(whole names, as the MJCF writes them without the prefix 'robot0_'). Did you mean 'l_foot_col'?"
+    )
+
+
+def test_unnamed_geoms_are_matched_and_named_as_body_geom_i(tmp_path: Path) -> None:
+    model = tmp_path / "dog.xml"
+    model.write_text(QUADRUPED)  # no geom has a name
+    assert main(["new", str(model), "-o", str(tmp_path / "dog.yaml")]) == 0
+    (dog,) = register_specs(tmp_path / "dog.yaml")
+    (tmp_path / "quiet.yaml").write_text(
+        f"name: QuietDog\nextends: {dog.__name__}\nmjlab:\n  collisions:\n"
+        "    - {geoms: ['.*_(hip|thigh)_geom0'], contype: 0, conaffinity: 0}\n"
+    )
+    register_specs(tmp_path / "quiet.yaml")
+    compiled = Entity(entity_cfg("QuietDog")).spec.compile()
+    for leg in ("FL", "FR", "RL", "RR"):
+        for part in ("hip", "thigh"):
+            geom = compiled.geom(f"robot0_{leg}_{part}_geom0")
+            assert (geom.contype[0], geom.conaffinity[0]) == (0, 0)
+        foot = compiled.geom(f"robot0_{leg}_foot_geom0")  # no entry names the feet: the MJCF's 1 and 1
+        assert (foot.contype[0], foot.conaffinity[0]) == (1, 1)

@@ -19,6 +19,7 @@ with warnings.catch_warnings():  # mjlab 1.6.0's own imports use torch.jit.scrip
     warnings.simplefilter("ignore", DeprecationWarning)
     pytest.importorskip("mjlab", reason='mjlab is not installed (pip install -e ".[mjlab]"; CI: .ci/mjlab)')
     torch = pytest.importorskip("torch")
+    from mjlab.asset_zoo.robots.unitree_g1.g1_constants import get_g1_robot_cfg
     from mjlab.entity.entity import Entity
     from mjlab.envs import ManagerBasedRlEnv
     from mjlab.tasks.velocity.velocity_env_cfg import make_velocity_env_cfg
@@ -140,6 +141,41 @@ def test_the_g1_floats_in_mjlab_with_its_motors_armature_and_mjlabs_joint_limit_
     # the 7520-22 knee motor's reflected inertia (specs/motors), not robosuite's 5/(i+1) rule
     assert model.joint("robot0_left_knee_joint").armature[0] == pytest.approx(0.0251019, rel=1e-5)
     assert entity_cfg("G1").articulation.soft_joint_pos_limit_factor == 0.9
+
+
+def _contacts(model: mujoco.MjModel) -> dict[tuple[object, ...], int]:
+    """How many geoms have each (contype, conaffinity, condim, priority, friction) setting."""
+    found: dict[tuple[object, ...], int] = {}
+    for g in range(model.ngeom):
+        key = (
+            *(int(getattr(model, f"geom_{f}")[g]) for f in ("contype", "conaffinity", "condim", "priority")),
+            tuple(float(v) for v in model.geom_friction[g].round(6)),
+        )
+        found[key] = found.get(key, 0) + 1
+    return found
+
+
+def test_the_g1s_contacts_in_mjlab_are_mjlabs_own_g1s_full_collision() -> None:
+    _needs_urdf("G1")
+    ours = _contacts(Entity(entity_cfg("G1")).spec.compile())
+    theirs = _contacts(Entity(get_g1_robot_cfg()).spec.compile())  # mjlab's G1, its FULL_COLLISION
+    # the same settings, on as many geoms as each model has (its MJCF: 7 spheres a foot, ours 4)
+    assert (
+        set(ours)
+        == set(theirs)
+        == {
+            (0, 0, 3, 0, (1.0, 0.005, 0.0001)),  # visual geoms
+            (
+                1,
+                1,
+                1,
+                0,
+                (1.0, 0.005, 0.0001),
+            ),  # every other collision geom: frictionless, self-collisions on
+            (1, 1, 3, 1, (0.6, 0.005, 0.0001)),  # the feet
+        }
+    )
+    assert ours[(1, 1, 3, 1, (0.6, 0.005, 0.0001))] == 8
 
 
 def test_robosuites_joint_rules_stay_out_of_an_mjlab_entity_unless_the_spec_asks() -> None:
