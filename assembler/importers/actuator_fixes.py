@@ -22,7 +22,7 @@ from assembler.importers.entries import Entry
 from assembler.importers.entries import short as _short
 from assembler.importers.physics import round_up
 from assembler.importers.reading import ModelFile
-from assembler.importers.references import label, selector
+from assembler.importers.references import label, selector, selects
 from assembler.importers.xml_files import XmlFiles
 from assembler.mjcf.fixes import apply_fixes
 from assembler.robosuite.conventions import has_force_range, is_bridge_servo
@@ -118,7 +118,7 @@ def _only(element: ET.Element, roots: Sequence[ET.Element]) -> dict[str, str] | 
     if where is None:
         return None
     same = [item for root in roots for item in root.iter(element.tag)]
-    selected = [item for item in same if all(item.get(k) == v for k, v in where.items())]
+    selected = [item for item in same if selects(item, where)]
     return where if selected == [element] else None
 
 

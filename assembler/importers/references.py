@@ -93,15 +93,16 @@ def selector(
     same_tag = [item for root in roots for item in root.iter(element.tag)]
     for count in range(1, len(ordered) + 1):
         where = {name: element.get(name, "") for name in ordered[:count]}
-        if [item for item in same_tag if _selects(item, where)] == [element]:
+        if [item for item in same_tag if selects(item, where)] == [element]:
             return where
     kept = {id(item) for top in avoid for item in top.iter()}
-    if not ordered or any(id(item) in kept and _selects(item, element.attrib) for item in same_tag):
+    if not ordered or any(id(item) in kept and selects(item, element.attrib) for item in same_tag):
         return None
     return dict(element.attrib)
 
 
-def _selects(item: ET.Element, where: dict[str, str]) -> bool:
+def selects(item: ET.Element, where: dict[str, str]) -> bool:
+    """Whether ``where`` (a ``mjcf_fixes`` selection) selects ``item``."""
     return all(item.get(name) == value for name, value in where.items())
 
 

@@ -24,7 +24,7 @@ import mujoco
 from mjlab.utils.spec_config import CollisionCfg
 
 from assembler.errors import AssemblerError, Problem
-from assembler.mjlab.task_parts import TaskParts, unnamed_geom_name
+from assembler.mjlab.task_parts import TaskParts, mjlab_geom_name
 from assembler.models import RobotModel
 from assembler.spec.fieldpath import FieldPath
 
@@ -50,12 +50,7 @@ def _whole_name(name: str) -> str:
 
 def _geom_names(model: mujoco.MjModel) -> list[str]:
     """Each geom's name in mjlab's copy: its own, or ``<body>_geom<i>``."""
-    names = []
-    for geom in range(model.ngeom):
-        body = int(model.geom_bodyid[geom])
-        place = geom - int(model.body_geomadr[body])
-        names.append(model.geom(geom).name or unnamed_geom_name(model.body(body).name, place))
-    return names
+    return [mjlab_geom_name(model, geom) for geom in range(model.ngeom)]
 
 
 def _no_match(robot: RobotModel, path: FieldPath, pattern: str, shown: list[str], prefix: str) -> Problem:

@@ -93,6 +93,14 @@ class TaskParts:
         )
 
 
+def mjlab_geom_name(model: mujoco.MjModel, geom: int) -> str:
+    """A geom's name in mjlab's copy of the robot: its own, or (unnamed) :func:`unnamed_geom_name`."""
+    body = int(model.geom_bodyid[geom])
+    return model.geom(geom).name or unnamed_geom_name(
+        model.body(body).name, geom - int(model.body_geomadr[body])
+    )
+
+
 def unnamed_geom_name(body: str, place: int) -> str:
     """The name an unnamed geom (a foot's, or one ``mjlab.collisions`` selects) gets in mjlab's copy of the
     robot (a URDF's collision geoms have none; mjlab selects geoms by name): its body's name and its place
@@ -176,7 +184,7 @@ def task_parts(robot: RobotModel, model: mujoco.MjModel) -> TaskParts:
         if not own:
             problems.append(f"mjlab.feet: {body} has no collision geom to stand on")
             continue
-        geoms += [model.geom(g).name or unnamed_geom_name(body, g - int(model.body_geomadr[b])) for g in own]
+        geoms += [mjlab_geom_name(model, g) for g in own]
         low = min(own, key=lambda g: geom_lowest(model, data, g))
         point = data.geom_xpos[low].copy()
         point[2] = geom_lowest(model, data, low)
