@@ -79,6 +79,19 @@ class Recorder:
         return records
 
 
+class SameFiles(Recorder):
+    """The files of an entry already stored, given as a :class:`Recorder` gives a compile's: a model
+    made from that entry's without a compile (a patched variant) was made from the same files. Its
+    records are the entry's, checked again when the store writes (a change meanwhile: None)."""
+
+    def __init__(self, dependencies: Sequence[Dependency]) -> None:
+        self._dependencies = tuple(dependencies)
+
+    def result(self) -> list[Dependency] | None:
+        """The entry's records refreshed to the files' current state, or None when one changed."""
+        return verify(self._dependencies)
+
+
 def verify(dependencies: Sequence[Dependency]) -> list[Dependency] | None:
     """The records refreshed to the files' current state, or None when a file changed (see
     :func:`~assembler.cache.file_state.check_all`)."""

@@ -29,7 +29,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.cache.dependencies import Dependency, Recorder, verify
+from assembler.cache.dependencies import Dependency, Recorder, SameFiles, verify
 from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Entry
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.folder import GRACE_SECONDS, MODEL_FILE
@@ -265,6 +265,15 @@ class ModelStore:
         _writers.append(writer)
         _pending[(str(self.directory), key)] = writer
         writer.start()
+
+    def save_patched(self, key: str, model: mujoco.MjModel, label: str, xml: str, source: str) -> None:
+        """Store ``model`` and its ``xml``, made from the entry ``source``'s without a compile (a
+        patched variant written to a file), under ``key`` with ``source``'s files as its own: the
+        same request is then answered from the cache as a compiled one is. Nothing is stored when
+        ``source`` is gone."""
+        found = self._read_entry(source)
+        if found is not None:
+            self.save(key, model, SameFiles(found.dependencies), label, xml)
 
     def _commit(self, entry: Entry, buffer: NDArray[np.uint8], recorder: Recorder, xml: bytes | None) -> None:
         try:

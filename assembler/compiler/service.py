@@ -161,11 +161,17 @@ def compile_xml(
     added to a current entry that lacks it, or stored with the model as a new entry. ``meshes``
     False reads meshes from their files rather than the mesh store: a process compiling the same
     meshes many times (variants) gains from MuJoCo's own asset cache, which keeps meshes read from
-    files processed (hulls, normals), and not those given in memory. On a miss, ``patched()`` is
-    asked first, as :func:`compile_model` asks it; its answer is not stored either.
+    files processed (hulls, normals), and not those given in memory. On a miss, and with the cache
+    off (``key`` None), ``patched()`` is asked first; its answer is not stored. Asking it in both
+    keeps a written file's bytes independent of what the cache holds: a robot with overrides is
+    written as its plain robot's text with the values written in, or compiled, by the overrides alone.
     """
     if key is None:
         counts.bypassed += 1
+        answered = patched() if patched is not None else None  # the text a cached answer would write
+        if answered is not None:
+            counts.patched += 1
+            return answered
         assembly = _built(build)
         model, xml = compile_and_emit(assembly.mjspec, assembly.home, assembly.what, meshes=cache and meshes)
         return CompiledModel(model, Keyframe.of(model)), xml

@@ -101,6 +101,12 @@ class PlacedPart(PartModel):
         if self._mjspec is not None:
             self._apply_placement(self._mjspec)
 
+    def place_as(self, other: PlacedPart) -> None:
+        """Place this robot where ``other`` was placed (its ``set_base_xpos``/``set_base_ori``)."""
+        self._root_pos, self._root_quat = other._root_pos, other._root_quat
+        if self._mjspec is not None:
+            self._apply_placement(self._mjspec)
+
     def _apply_placement(self, assembly: mujoco.MjSpec) -> None:
         root = assembly.body(self.root_body)
         if self._root_pos is not None:

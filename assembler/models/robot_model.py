@@ -9,6 +9,7 @@ build itself. Name lists come from the parts, so they cannot go stale the way ro
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 from typing import Any, ClassVar
 
@@ -256,12 +257,14 @@ class RobotModel(PlacedPart):
         answer: CompiledModel | None = compiler.variant_patcher().patched_variant(self)
         return answer
 
-    def _patched_xml(self) -> tuple[CompiledModel, str] | None:
-        """On a cache miss: this robot's model and XML from the cached ones of the robot without its
-        overrides (not stored), or None to compile (see :meth:`_patched`)."""
+    def _patched_xml(self, cache: bool, store: bool) -> tuple[CompiledModel, str] | None:
+        """On a cache miss: this robot's model and XML made from the model and XML of the robot without
+        its overrides (not stored), or None to compile (see :meth:`_patched`). The plain robot's come
+        from the cache, else from its compile, so the text written is the same whatever the cache holds."""
         if compiler.variant_patcher is None:
             return None
-        answer: tuple[CompiledModel, str] | None = compiler.variant_patcher().patched_variant_xml(self)
+        patcher = compiler.variant_patcher()
+        answer: tuple[CompiledModel, str] | None = patcher.patched_variant_xml(self, cache, store)
         return answer
 
     def set_mujoco_model(self, mujoco_model: mujoco.MjModel | None = None) -> None:
@@ -278,7 +281,7 @@ class RobotModel(PlacedPart):
             self._keyframe = Keyframe.of(model)
             return xml
         self.entry_key = key = entry_key(self.build_inputs(), cache)
-        patched = self._patched_xml if key is not None else None
+        patched = partial(self._patched_xml, cache, store)  # with the cache off too: one text either way
         compiled, xml = compile_xml(key, self._assembly, cache, store, meshes, patched)
         if compiled is not None:
             self._keyframe = compiled.keyframe

@@ -9,20 +9,26 @@ what MuJoCo derives from it (:func:`~assembler.patch.derived.apply_patch`): no M
 mesh is read or decoded, nothing is compiled. The result equals a full compile within 1e-10 in
 every model field (tests/patch/test_patched_api.py).
 
-``get_xml()`` and ``save()`` of such a robot are answered the same way when the plain robot's entry
-holds its emitted XML too: that text with the patch's values written into the attributes that hold
-them (:mod:`assembler.patch.xml_edits`), which MuJoCo loads to the full compile's model.
+``get_xml()`` and ``save()`` of such a robot are always answered the same way, the cache on or off:
+the plain robot's emitted XML (from its cache entry, else compiled for it) with the patch's values
+written into the attributes that hold them (:mod:`assembler.patch.xml_edits`), which MuJoCo loads to
+the full compile's model. So a written file's bytes depend on the overrides, never on what the cache
+held (a compile writes a servo's resolved ``kv`` where the patch keeps its ``dampratio``, and MuJoCo's
+writer rounds some numbers: both load to the same model, but a review would see the bytes change).
 
-Anything a patch cannot do (a structural override, ``set_joint_attribute`` edits, the plain robot
-not in the cache) is compiled as before; the reason is logged at DEBUG level on the
+Anything a patch cannot do (a structural override, ``set_joint_attribute`` edits; for ``get_model()``
+the plain robot not in the cache) is compiled as before; the reason is logged at DEBUG level on the
 ``assembler.patch.robot_variant`` logger, never warned: a compile is the normal answer, not a problem.
 
-A patched model (or XML) is not stored as a cache entry of its own, whatever ``store`` says: patching it
-again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU against ~0.1 s for
-the load, measured under load), while storing it costs more than the patch (serialising a Panda's
-44 MB model, mostly its meshes, took 0.17 s of CPU, plus the write) and each such entry would push
-the plain robot's entry, the one every variant needs, out of the bounded cache. A variant asked
-for again is patched again from the plain robot's entry, which each use keeps recent.
+A model patched for ``get_model()`` is not stored as a cache entry of its own, whatever ``store``
+says: patching it again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU
+against ~0.1 s for the load, measured under load), while storing it costs more than the patch
+(serialising a Panda's 44 MB model, mostly its meshes, took 0.17 s of CPU, plus the write) and each
+such entry would push the plain robot's entry, the one every variant needs, out of the bounded
+cache. A variant asked for again is patched again from the plain robot's entry, which each use keeps
+recent. A patched XML is stored, with its model, unless ``store`` is False: it is written to a file,
+and stored, the same request is answered from the cache next time with no spec read, as a compiled
+one is (the entry records the plain robot's files, which it was made from).
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ from dataclasses import replace
 
 import mujoco
 
+from assembler.compiler.compile import compile_and_emit
 from assembler.compiler.service import CompiledModel
 from assembler.compiler.stored import default_store, entry_key, load_entry
 from assembler.mjcf.emit import XmlText
@@ -72,22 +79,25 @@ def _tables(plain: RobotModel, robot: RobotModel) -> tuple[Resolved, Resolved]:
     return resolved, light if light is not None else Resolved.of(robot)
 
 
-def _plain_patch(robot: RobotModel, with_xml: bool = False) -> tuple[mujoco.MjModel, ModelPatch, str] | None:
-    """The cached model of ``robot``'s plain robot, the patch that makes ``robot`` of it and (with
-    ``with_xml``, looked up first: without it nothing else is read; else "") its cached XML;
-    None, with the reason logged, when it must be compiled."""
+def _plain_patch(
+    robot: RobotModel, with_xml: bool = False, cache: bool = True, store: bool = True
+) -> tuple[mujoco.MjModel, ModelPatch, str] | None:
+    """The model of ``robot``'s plain robot, the patch that makes ``robot`` of it and (with
+    ``with_xml``; else "") the plain robot's XML; None, with the reason logged, when it must be
+    compiled. Without ``with_xml`` only the cached model is used (a patch must cost less than the
+    compile it saves); with it the plain robot's model and XML come from the cache, else from its
+    compile (kept unless ``store`` is False), so the text is the same whatever the cache held."""
     reason = _refusal(robot)
     if reason is not None:
         LOG.debug("%s compiled: %s", robot.name, reason)
         return None
     plain = unpatched_class(type(robot))(idn=robot.idn)
-    base_key = entry_key(replace(robot.build_inputs(), robot=plain.part_inputs()))
-    xml = default_store().load_xml(base_key) if with_xml and base_key is not None else ""
-    if xml is None:
-        LOG.debug("%s compiled for its XML: its plain robot's XML is not cached", robot.name)
-        return None
-    model = load_entry(base_key, counted=False) if base_key is not None else None
-    if base_key is None or model is None:
+    base_key = _plain_key(robot, plain, cache)
+    if with_xml:
+        model, xml = _plain_model_and_xml(_equipped_plain(robot), base_key, cache, store)
+    else:
+        model, xml = load_entry(base_key, counted=False) if base_key is not None else None, ""
+    if model is None:
         LOG.debug("%s compiled: the robot without its overrides is not in the model cache", robot.name)
         return None
     try:
@@ -95,6 +105,41 @@ def _plain_patch(robot: RobotModel, with_xml: bool = False) -> tuple[mujoco.MjMo
     except NotPatchable as error:
         LOG.debug("%s compiled: %s", robot.name, error)
         return None
+
+
+def _plain_key(robot: RobotModel, plain: RobotModel, cache: bool = True) -> str | None:
+    """The cache key of ``robot``'s plain robot ``plain`` (same idn, base, grippers and placement)."""
+    return entry_key(replace(robot.build_inputs(), robot=plain.part_inputs()), cache)
+
+
+def _equipped_plain(robot: RobotModel) -> RobotModel:
+    """``robot`` without its overrides, with parts of its base's and grippers' classes and its
+    placement: the robot whose key :func:`_plain_key` gives, ready to build."""
+    plain = unpatched_class(type(robot))(idn=robot.idn)
+    if robot.base is not None:
+        plain.add_base(type(robot.base)(idn=robot.base.idn))
+    for arm, gripper in getattr(robot, "grippers", {}).items():
+        plain.add_gripper(type(gripper)(idn=gripper.idn), arm)  # type: ignore[attr-defined]
+    plain.place_as(robot)
+    return plain
+
+
+def _plain_model_and_xml(
+    plain: RobotModel, key: str | None, cache: bool, store: bool
+) -> tuple[mujoco.MjModel, str]:
+    """The plain robot's model and emitted XML: its cache entry's when it holds both, else compiled
+    (and kept with ``cache`` and ``store``: every later variant of it is then answered from the cache)."""
+    if key is not None:
+        xml = default_store().load_xml(key)
+        model = load_entry(key, counted=False) if xml is not None else None
+        if model is not None and xml is not None:
+            return model, xml
+    LOG.debug("%s compiled for its variants' XML", plain.name)
+    if key is None:  # the cache off: one compile, as plain.get_xml(cache=False) makes it
+        model, xml = compile_and_emit(plain.mjspec, plain.assembly_home(), plain.describe(), meshes=False)
+        return model, xml
+    xml = plain.get_xml(cache=True, store=store)  # compiled and kept: the model below is its load
+    return plain.get_model(cache=True, store=store), xml
 
 
 def patched_variant(robot: RobotModel) -> CompiledModel | None:
@@ -109,12 +154,14 @@ def patched_variant(robot: RobotModel) -> CompiledModel | None:
     return CompiledModel(model, Keyframe.of(model))
 
 
-def patched_variant_xml(robot: RobotModel) -> tuple[CompiledModel, str] | None:
-    """``robot``'s model and MJCF, both from its plain robot's cache entry: the model patched, the
-    text the plain robot's emitted XML with the patch's values written in
+def patched_variant_xml(
+    robot: RobotModel, cache: bool = True, store: bool = True
+) -> tuple[CompiledModel, str] | None:
+    """``robot``'s model and MJCF, both from its plain robot's (cached, else compiled): the model
+    patched, the text the plain robot's emitted XML with the patch's values written in
     (:mod:`assembler.patch.xml_edits`); None, with the reason logged, when it must be compiled
-    (the entry holds no XML, or the patch writes what no attribute holds alone: ``bodies:`` scales)."""
-    found = _plain_patch(robot, with_xml=True)
+    (the patch writes what no attribute holds alone: ``bodies:`` scales)."""
+    found = _plain_patch(robot, with_xml=True, cache=cache, store=store)
     if found is None:
         return None
     model, patch, xml = found
@@ -123,5 +170,10 @@ def patched_variant_xml(robot: RobotModel) -> tuple[CompiledModel, str] | None:
         LOG.debug("%s compiled for its XML: not writable as attribute edits", robot.name)
         return None
     apply_patch(model, patch)
-    LOG.debug("%s written from its plain robot's cached XML: %s", robot.name, ", ".join(patch.fields))
+    LOG.debug("%s written from its plain robot's XML: %s", robot.name, ", ".join(patch.fields))
+    key = robot.entry_key
+    if store and key is not None:  # a file written: the same request next time is answered from the cache
+        plain = _plain_key(robot, unpatched_class(type(robot))(idn=robot.idn))
+        if plain is not None:
+            default_store().save_patched(key, model, robot.name, text, plain)
     return CompiledModel(model, Keyframe.of(model)), text

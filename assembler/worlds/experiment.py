@@ -40,7 +40,10 @@ class Experiment:
         return self.scene.get_model() if self.scene is not None else self.robots[0].get_model()
 
     def get_xml(self) -> str:
-        """The experiment as one standalone MJCF document (compiled first, so it is valid)."""
+        """The experiment as one standalone MJCF document (compiled first, so it is valid); one robot's
+        is the text ``assembler build`` writes for it with the same overrides."""
+        if self.scene is None:
+            return self.robots[0].get_xml()
         self.get_model()
         return to_xml(self.mjspec)
 

@@ -164,17 +164,47 @@ def test_a_saved_variant_of_a_cached_robot_is_written_without_a_compile_and_load
     assert loaded.key("home").qpos[:7].tolist() == overrides["init_qpos"]  # the arm's; then the fingers
 
 
-def test_the_xml_of_a_variant_is_compiled_when_only_the_plain_model_is_cached(
-    caplog: pytest.LogCaptureFixture,
-) -> None:
-    assembler.assemble("Sparrow7").get_model()  # the model, not its XML
+HELD = ("nothing", "the plain model", "the plain model and XML", "the variant")
+"""What the cache holds when a variant's XML is asked for (each a fresh cache); last, with the cache off."""
+
+
+def _variant_xml(held: str, overrides: dict[str, Any], monkeypatch: pytest.MonkeyPatch, folder: Path) -> str:
+    use_private_cache(folder, monkeypatch)
+    if held == "the plain model":
+        assembler.assemble("Sparrow7").get_model()
+    elif held == "the plain model and XML":
+        assembler.assemble("Sparrow7").get_xml()
+    elif held == "the variant":
+        assembler.assemble("Sparrow7", overrides=overrides).get_xml()
     wait_for_writes()
-    patched = service.counts.patched
-    with caplog.at_level(logging.DEBUG, logger="assembler.patch.robot_variant"):
-        xml = assembler.assemble("Sparrow7", overrides={"joint_defaults.damping": 0.25}).get_xml()
-    assert service.counts.patched == patched
-    assert mujoco.MjModel.from_xml_string(xml).joint("robot0_joint1").damping[0] == pytest.approx(0.25)
-    assert "Sparrow70 compiled for its XML: its plain robot's XML is not cached" in caplog.text
+    return assembler.assemble("Sparrow7", overrides=overrides).get_xml()
+
+
+def test_the_xml_of_a_variant_is_the_same_whatever_the_cache_holds(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A written file's bytes depend on the overrides, never on the cache: a servo's damping ratio
+    patched stays a ratio where a compile writes the kv it resolves to, so a file made once from the
+    cache and once by a compile would differ in review though both load to the same model."""
+    overrides = {"joints": [{"match": "joint2", "armature": 0.3}]}  # moves the servos' resolved kv
+    texts = {
+        held: _variant_xml(held, overrides, monkeypatch, tmp_path / str(i)) for i, held in enumerate(HELD)
+    }
+    texts["the cache off"] = assembler.assemble("Sparrow7", overrides=overrides).get_xml(cache=False)
+    assert len(set(texts.values())) == 1, {held: hash(text) for held, text in texts.items()}
+    compiled = assembler.assemble("Sparrow7", overrides=overrides).get_model(cache=False, store=False)
+    assert _differences(mujoco.MjModel.from_xml_string(texts["nothing"]), compiled) == []
+
+
+def test_the_xml_of_a_variant_asked_again_is_answered_from_the_cache(monkeypatch: pytest.MonkeyPatch) -> None:
+    overrides = {"joint_defaults.damping": 0.25}
+    first = assembler.assemble("Sparrow7", overrides=overrides).get_xml()
+    wait_for_writes()
+    with monkeypatch.context() as tripwire:
+        _no_compile(tripwire)
+        again = assembler.assemble("Sparrow7", overrides=overrides).get_xml()
+    assert again == first
+    assert mujoco.MjModel.from_xml_string(again).joint("robot0_joint1").damping[0] == pytest.approx(0.25)
 
 
 def test_a_patched_variant_is_not_stored_and_asked_again_is_patched_again(
