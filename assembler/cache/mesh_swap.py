@@ -38,7 +38,7 @@ from assembler.cache.file_state import stat_of as file_stat
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE, mesh_kind, msh_supported
 from assembler.cache.mesh_fill import fill
 from assembler.cache.meshes import MeshStore, default_mesh_store
-from assembler.mjcf.versions import mujoco_at_least
+from assembler.mjcf.installed_mujoco import mujoco_at_least
 
 Mesh = tuple[str, str]
 """(absolute file path, decoder content type) of a mesh file."""

@@ -36,7 +36,7 @@ from assembler.cache.folder import GRACE_SECONDS, MODEL_FILE
 from assembler.cache.folder import evict as evict_folder
 from assembler.files.inputs import note_inputs
 from assembler.files.regular import open_regular, read_regular
-from assembler.mjcf import mujoco_warnings
+from assembler.mjcf import installed_mujoco
 
 TEMP_SUFFIX = ".tmp"
 
@@ -133,7 +133,7 @@ class ModelStore:
                 with mmap.mmap(stream.fileno(), 0, access=mmap.ACCESS_READ) as content:
                     if buffer_digest(content) != entry.digest:
                         return None
-                with mujoco_warnings.collected() as warned:
+                with installed_mujoco.collected() as warned:
                     model = mujoco.MjModel.from_binary_path(_descriptor_path(stream.fileno(), path))
                 return None if warned else model
         except (OSError, ValueError):

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.mjcf.versions import mujoco_at_least
+from assembler.mjcf.installed_mujoco import mujoco_at_least
 
 FIXED_IN: tuple[int, int] = (3, 16)
 """The first MuJoCo whose parser applies the rule itself; from it on this module does nothing."""

@@ -32,8 +32,8 @@ from numpy.typing import ArrayLike
 from assembler.errors import MjcfError, summarize_names
 from assembler.files.paths import display_path
 from assembler.mjcf.emit import to_xml
+from assembler.mjcf.installed_mujoco import mujoco_at_least
 from assembler.mjcf.joints import FREE, remove_free_joints
-from assembler.mjcf.versions import mujoco_at_least
 
 MANIPULATOR_MOUNT = "manipulator_mount"
 

@@ -35,8 +35,8 @@ import mujoco
 import numpy as np
 
 from assembler.errors import MjcfError, summarize_names
-from assembler.mjcf import mujoco_warnings
-from assembler.mjcf.versions import mujoco_at_least
+from assembler.mjcf import installed_mujoco
+from assembler.mjcf.installed_mujoco import mujoco_at_least
 from assembler.spec.schema.added_joints import AddedJoint, VelocityActuator
 
 FREE = mujoco.mjtJoint.mjJNT_FREE
@@ -106,7 +106,7 @@ def authored_attributes(
         if attribute not in in_main:
             main_joint.set(attribute, repr(SENTINEL))
     probe_xml = ET.tostring(probe_root, encoding="unicode")
-    with mujoco_warnings.collected():  # the file's own parse has shown them
+    with installed_mujoco.collected():  # the file's own parse has shown them
         probe = mujoco.MjSpec.from_string(probe_xml, include=dict(included or {}))
 
     literal = {

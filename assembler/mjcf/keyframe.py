@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.errors import MjcfError
-from assembler.mjcf import census, mujoco_warnings
+from assembler.mjcf import census, installed_mujoco
 
 HOME_KEY = "home"
 
@@ -90,7 +90,7 @@ def compile_with_home(
     (others at qpos0)."""
     key = _home_key(spec)
     try:
-        with mujoco_warnings.warned(what):
+        with installed_mujoco.warned(what):
             model = compile(spec)
     except ValueError as error:
         message = " ".join(str(error).split()).removeprefix("Error: ")

@@ -36,7 +36,7 @@ from assembler.errors import AssemblerWarning, MjcfError, Problem
 from assembler.files.inputs import note_inputs
 from assembler.files.paths import allowed_folders, confine, display_path, homes_of, locate_model_file
 from assembler.files.regular import not_regular
-from assembler.mjcf import mujoco_warnings
+from assembler.mjcf import installed_mujoco
 from assembler.mjcf.actuator_defaults import normalize_actuator_defaults
 from assembler.mjcf.compose import refuse_unattachable, settle_default_site_materials
 from assembler.mjcf.emit import to_xml
@@ -179,7 +179,7 @@ def _parse(
     try:
         root = ET.parse(path).getroot()
         if not fixes:
-            with mujoco_warnings.warned(shown):
+            with installed_mujoco.warned(shown):
                 return root, mujoco.MjSpec.from_file(str(path)), lines, dict(included)
         original = original_lines(root, path.read_bytes())
         others = {name: ET.fromstring(text) for name, text in included.items()}
@@ -200,7 +200,7 @@ def _parse(
         # the included files are handed over repaired, by the names the <include>s give.
         text = ET.tostring(root, encoding="unicode")
         lines = repaired_lines(root, text, original)
-        with mujoco_warnings.warned(shown):
+        with installed_mujoco.warned(shown):
             spec = mujoco.MjSpec.from_string(text, include=repaired)
         _unprefix_included_assets(spec, {name: others[name] for name in repaired})
         return root, spec, lines, repaired
@@ -344,7 +344,7 @@ def subtree_source(source: MjcfSource, body: str) -> MjcfSource:
     part.compiler.degree = source.pristine.compiler.degree
     part.option, part.visual = copy.option, copy.visual  # the file's: no conflict for attach to warn of
     part.worldbody.add_frame().attach_body(top, _SUBTREE_PREFIX, "")
-    with mujoco_warnings.collected():
+    with installed_mujoco.collected():
         text = to_xml(part)  # every digit: MuJoCo's writer keeps six (ranges, masses, inertias)
     text = text.replace(f'"{_SUBTREE_PREFIX}main"', f'"{_SUBTREE_MAIN}"').replace(
         f'="{_SUBTREE_PREFIX}', '="'

@@ -72,7 +72,7 @@ from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
 from assembler.files.paths import confine, display_path
 from assembler.files.regular import not_regular, open_regular
-from assembler.mjcf import mujoco_warnings
+from assembler.mjcf import installed_mujoco
 
 FILE_ELEMENTS: tuple[str, ...] = ("include", "model", "flexcomp")
 """Elements whose ``file`` MuJoCo reads while parsing the XML (meshes and textures are read at
@@ -264,7 +264,7 @@ def check_as_mujoco(probe: mujoco.MjSpec, resolved: mujoco.MjSpec, shown: str, l
     probe.compiler.boundinertia = max(probe.compiler.boundinertia, MASS_FLOOR)
     try:
         # Its warnings are about stand-ins, or come again from the part's real compile: not shown.
-        with mujoco_warnings.collected():
+        with installed_mujoco.collected():
             probe.compile()
     except ValueError as error:
         raise MjcfError(refusal_line(str(error), shown, lines, "MuJoCo refuses it")) from None

@@ -29,7 +29,7 @@ from assembler.files.paths import (
     locate_model_file,
     package_root,
 )
-from assembler.mjcf import mujoco_warnings
+from assembler.mjcf import installed_mujoco
 from assembler.mjcf.joints import Authored
 from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource, name_mesh_content_types
 from assembler.mjcf.xml_guard import check_mjcf
@@ -171,7 +171,7 @@ def _load(
     document = read_urdf(path, homes, path.read_bytes())
     # MuJoCo's warnings are said to the user, never appended to MUJOCO_LOG.TXT; when our own check
     # says the same thing (a <mimic> MuJoCo 4 ignores with a warning), ours, with the file's line, is enough.
-    with mujoco_warnings.warned(shown) as said:
+    with installed_mujoco.warned(shown) as said:
         spec = _import(document.text, shown)
         ignored = add_mimics(spec, document.mimics, shown)
         said += [f"<mimic> on joint '{mimic.follower}' ignored" for mimic in ignored]  # ours has its line

@@ -33,7 +33,7 @@ from assembler.cache.mesh_swap import (
 )
 from assembler.cache.meshes import MAGIC, MeshStore, default_mesh_store
 from assembler.files.paths import package_root
-from assembler.mjcf.versions import mujoco_at_least
+from assembler.mjcf.installed_mujoco import mujoco_at_least
 from tests.conftest import use_private_cache
 
 HAS_ROBOSUITE = package_root("robosuite") is not None
