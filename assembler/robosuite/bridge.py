@@ -23,26 +23,42 @@ except ImportError as error:  # pragma: no cover - depends on the installation
 import assembler.registry.catalog  # noqa: F401  (registers the shipped specs on first import)
 from assembler.errors import Problem, RegistryError, did_you_mean
 from assembler.models import REGISTRIES, PartModel
+from assembler.models.registering import Registry
 from assembler.robosuite import compat
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.conventions import offered
-from assembler.robosuite.registries import TABLES, install, installed, replaced, robosuite_has
-from assembler.robosuite.registries import family_of as _family_of
+from assembler.robosuite.registrations import family_of as _family_of
+from assembler.robosuite.registrations import recorded
+from assembler.robosuite.registries import TABLES, Installable, install, installed, replaced, robosuite_has
 
 __all__ = ["register", "register_experiment", "registered", "replace_robosuite", "replaced"]
 
 
-def _shipped() -> list[type[PartModel]]:
-    """The registered spec classes that enter robosuite at import. A shipped spec of a name robosuite
-    uses itself enters only through ``replace_robosuite``, so its file stays unread until something
-    looks the name up (44 of the 63 shipped specs: about 0.1 s of every process that imports the
-    bridge); every other held name is made here, to be installed."""
-    for family, table in REGISTRIES.items():
+def _shipped() -> list[Installable]:
+    """What enters robosuite at import. A shipped spec of a name robosuite uses itself enters only
+    through ``replace_robosuite``, so its file stays unread until something looks the name up (44
+    of the 63 shipped specs); every other held name enters by its registration record, or is made
+    here (and recorded) when it has none (:mod:`.registrations`); and every class already made
+    (a user's folder registered before robosuite loaded) enters as it is."""
+    found: dict[tuple[str, str], Installable] = {}
+    for family, table in _bases_first():
         for name in table.held_names():
             if not robosuite_has(family, name):
-                table.get(name)  # a lookup makes it
-    return [cls for table in REGISTRIES.values() for cls in table.made() if _enters_robosuite(cls)]
+                registration = recorded(family, name)  # None: the spec was read, its class made
+                if registration is not None and registration.offered:
+                    found[(registration.family, name)] = registration
+    for table in REGISTRIES.values():
+        for cls in table.made():
+            if _enters_robosuite(cls):
+                found.setdefault((_family_of(cls), cls.__name__), cls)
+    return list(found.values())
+
+
+def _bases_first() -> list[tuple[str, Registry[PartModel]]]:
+    """The registries, bases first: a robot's base is read to record the robot (its type decides the
+    robot's Robot type), so a base read before its own record is looked for is recorded too."""
+    return sorted(REGISTRIES.items(), key=lambda item: item[0] != "base")
 
 
 def _enters_robosuite(cls: type[PartModel]) -> bool:
@@ -56,17 +72,23 @@ def _enters_robosuite(cls: type[PartModel]) -> bool:
 
 def replace_robosuite(names: list[str] | None = None) -> list[str]:
     """Replace robosuite's own robots, grippers and bases by our specs of the same names (all of them
-    when ``names`` is None); returns the names replaced."""
-    classes = [
-        cls
-        for table in REGISTRIES.values()
-        for name, cls in table.items()
-        if (names is None or name in names) and robosuite_has(_family_of(cls), name)
-    ]
-    unknown = sorted(set(names or []) - {cls.__name__ for cls in classes})
+    when ``names`` is None); returns the names replaced. A shipped spec not read yet is installed
+    from its registration record when it has one, and read when it is used."""
+    found: dict[str, Installable] = {}
+    for family, table in _bases_first():
+        for name in table.held_names():
+            if (names is None or name in names) and robosuite_has(family, name):
+                registration = recorded(family, name)  # None: the spec was read, its class made
+                if registration is not None:
+                    found[name] = registration
+        for cls in table.made():
+            name = cls.__name__
+            if (names is None or name in names) and robosuite_has(_family_of(cls), name):
+                found.setdefault(name, cls)
+    unknown = sorted(set(names or []) - set(found))
     if unknown:
         raise RegistryError([Problem(_why_not_replaced(name)) for name in unknown])
-    return install(classes, replace=True)
+    return install(found.values(), replace=True)
 
 
 def _why_not_replaced(name: str) -> str:

@@ -167,17 +167,19 @@ class ControllerConfigs:
     """The wrapper of robosuite's loader: which robots it answers for, and the answers."""
 
     def __init__(self) -> None:
-        self.robots: dict[str, type[ManipulatorModel]] = {}
-        """Robot name -> our class of that name, for the robots we registered with robosuite."""
+        self.robots: dict[str, type] = {}
+        """Robot name -> the robosuite class we registered for it (its ``assembler_class``, our class
+        of that name, is read only when robosuite asks for its configuration)."""
 
         self.robosuites_own: set[str] = set()
         """Names of robosuite's own robots: without a declared configuration they keep robosuite's."""
 
     def load(self, controller: str | None = None, robot: str | None = None) -> dict[str, Any]:
         """robosuite's ``load_composite_controller_config``, answering for spec robots."""
-        robot_class = self.robots.get(robot) if controller is None and robot is not None else None
-        if robot_class is None:
+        registered = self.robots.get(robot) if controller is None and robot is not None else None
+        if registered is None:
             return ROBOSUITES_LOADER(controller=controller, robot=robot)
+        robot_class: type[ManipulatorModel] = registered.assembler_class  # type: ignore[attr-defined]
         declared = declared_config(robot_class)
         if declared is not None:
             return declared

@@ -34,6 +34,10 @@ BASE_CLASSES: dict[str, type] = {
 ACTIONS = FieldPath(("actions",))
 
 _classes: dict[type, type] = {}
+"""The robosuite class made of each spec class."""
+
+_recorded: dict[tuple[str, str], type] = {}
+"""The robosuite class made of each (family, name) installed from its registration record."""
 
 
 class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
@@ -136,16 +140,36 @@ def robosuite_class_of(spec_class: type[PartModel]) -> type:
     made = _classes.get(spec_class)
     if made is not None:
         return made
-    namespace: dict[str, Any] = {
-        "assembler_class": spec_class,
-        "__module__": __name__,
-        "__doc__": f"{spec_class.__name__} from its spec, for robosuite's environments.",
-    }
     if issubclass(spec_class, GripperModel):
-        bases: tuple[type, ...] = (SpecGripper,)
+        family, base_type = "gripper", ""
     elif issubclass(spec_class, RobotBaseModel):
-        bases = (SpecBase, BASE_CLASSES[spec_class.spec.type])
+        family, base_type = "base", spec_class.spec.type
     else:
         raise TypeError(f"robosuite_class_of: {spec_class.__name__} is neither a gripper nor a base")
-    made = _classes[spec_class] = type(spec_class.__name__, bases, namespace)
+    recorded = _recorded.get((family, spec_class.__name__))
+    if recorded is not None and getattr(recorded, "assembler_class", None) is spec_class:
+        made = recorded  # installed from its registration record
+    else:
+        made = _made(spec_class.__name__, base_type, spec_class)
+    _classes[spec_class] = made
     return made
+
+
+def recorded_class(family: str, name: str, base_type: str, assembler_class: object) -> type:
+    """The robosuite class of a gripper or base known by its registration record (made once per
+    name): ``assembler_class`` stands for the spec class until it is read."""
+    made = _recorded.get((family, name))
+    if made is None:
+        made = _recorded[(family, name)] = _made(name, base_type, assembler_class)
+    return made
+
+
+def _made(name: str, base_type: str, assembler_class: object) -> type:
+    """robosuite's class for the gripper (``base_type`` empty) or base ``name``."""
+    namespace: dict[str, Any] = {
+        "assembler_class": assembler_class,
+        "__module__": __name__,
+        "__doc__": f"{name} from its spec, for robosuite's environments.",
+    }
+    bases = (SpecBase, BASE_CLASSES[base_type]) if base_type else (SpecGripper,)
+    return type(name, bases, namespace)

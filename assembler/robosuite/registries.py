@@ -11,6 +11,7 @@ LeggedRobot); new names get theirs from :mod:`assembler.robosuite.conventions`.
 
 from __future__ import annotations
 
+import inspect
 import logging
 from collections.abc import Iterable, MutableMapping
 from types import ModuleType
@@ -24,11 +25,13 @@ from robosuite.models.robots.robot_model import REGISTERED_ROBOTS
 from robosuite.robots import ROBOT_CLASS_MAPPING
 
 from assembler.errors import Problem, RegistryError
-from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotBaseModel
+from assembler.models import ManipulatorModel, PartModel
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.conventions import robot_type_name
-from assembler.robosuite.part_classes import robosuite_class_of
-from assembler.robosuite.robot_class import robot_class
+from assembler.robosuite.part_classes import recorded_class, robosuite_class_of
+from assembler.robosuite.registrations import Registration, SpecClassOf
+from assembler.robosuite.registrations import family_of as family_of  # the name tests import from here
+from assembler.robosuite.robot_class import robosuite_robot, robot_class
 from assembler.spec.fieldpath import FieldPath
 
 LOG = logging.getLogger("assembler.robosuite")
@@ -47,15 +50,21 @@ NULL_GRIPPER = "NullGripper"
 _replaced: list[str] = []
 
 
-def family_of(spec_class: type[PartModel]) -> str:
-    """robot, gripper or base."""
-    if issubclass(spec_class, ManipulatorModel):
-        return "robot"
-    if issubclass(spec_class, GripperModel):
-        return "gripper"
-    if issubclass(spec_class, RobotBaseModel):
-        return "base"
-    raise RegistryError(f"{spec_class.__name__}: robosuite takes robots with arms, grippers and bases only")
+Installable = type[PartModel] | Registration
+"""A spec class, or the registration record of a shipped spec not read yet."""
+
+
+def _family_and_name(item: Installable) -> tuple[str, str]:
+    if isinstance(item, Registration):
+        return item.family, item.name
+    return family_of(item), item.__name__
+
+
+def _spec_class(item: Installable) -> type[PartModel]:
+    """The spec class of ``item`` (a registration's is looked up: its spec read)."""
+    if isinstance(item, Registration):
+        return SpecClassOf(item.family, item.name).__get__(None)
+    return item
 
 
 def registered_class(family: str, name: str) -> type | None:
@@ -72,8 +81,20 @@ def robosuite_has(family: str, name: str) -> bool:
 
 
 def ours(existing: type | None) -> type[PartModel] | None:
-    """The spec class behind a registered robosuite class of ours, or None."""
+    """The spec class behind a registered robosuite class of ours, or None (read, when it was
+    installed from its registration record)."""
     return getattr(existing, "assembler_class", None)
+
+
+def is_ours(existing: type | None) -> bool:
+    """Whether ``existing`` is a robosuite class of ours, without reading its spec."""
+    return inspect.getattr_static(existing, "assembler_class", None) is not None
+
+
+def _registration(existing: type | None) -> Registration | None:
+    """The registration record a class of ours was installed from, if it still stands for its spec."""
+    found = inspect.getattr_static(existing, "registration", None)
+    return found if isinstance(found, Registration) else None
 
 
 def _same_spec(registered: type[PartModel] | None, spec_class: type[PartModel]) -> bool:
@@ -82,13 +103,16 @@ def _same_spec(registered: type[PartModel] | None, spec_class: type[PartModel]) 
     return registered is spec_class or (registered is not None and registered.spec == spec_class.spec)
 
 
-def _conflict(spec_class: type[PartModel], replace: bool, replace_ours: bool) -> Problem | None:
-    """Why ``spec_class`` cannot take its name in robosuite's table, if it cannot."""
-    family, name = family_of(spec_class), spec_class.__name__
+def _conflict(item: Installable, replace: bool, replace_ours: bool) -> Problem | None:
+    """Why ``item`` cannot take its name in robosuite's table, if it cannot (a registration's spec is
+    read only to compare it with another spec of ours, or to say where the name is)."""
+    family, name = _family_and_name(item)
     existing = registered_class(family, name)
-    if existing is None or _same_spec(ours(existing), spec_class):
+    if existing is None or (isinstance(item, Registration) and _registration(existing) == item):
         return None
-    if replace_ours and ours(existing) is not None:
+    if replace_ours and is_ours(existing):
+        return None
+    if is_ours(existing) and _same_spec(ours(existing), _spec_class(item)):
         return None
     if robosuite_has(family, name):
         if replace:
@@ -101,34 +125,46 @@ def _conflict(spec_class: type[PartModel], replace: bool, replace_ours: bool) ->
         where = ours(existing) or existing
         owner = f"{where.__module__}.{where.__qualname__}"
         message = f"robosuite's {family} '{name}' is already {owner}; rename the spec"
-    return spec_class.spec_problem(NAME, message)
+    return _spec_class(item).spec_problem(NAME, message)
+
+
+def _robosuite_class(item: Installable) -> type:
+    """robosuite's class for ``item``: a registration's stands for its spec class until it is used."""
+    if not isinstance(item, Registration):
+        return robot_class(item) if issubclass(item, ManipulatorModel) else robosuite_class_of(item)
+    stand_in = SpecClassOf(item.family, item.name)
+    if item.family == "robot":
+        made = robosuite_robot(item.name, item.arms, stand_in)
+    else:
+        made = recorded_class(item.family, item.name, item.base_type, stand_in)
+    made.registration = item  # what _conflict compares
+    return made
 
 
 def install(
-    spec_classes: Iterable[type[PartModel]], replace: bool = False, replace_ours: bool = False
+    spec_classes: Iterable[Installable], replace: bool = False, replace_ours: bool = False
 ) -> list[str]:
-    """Put the robosuite class of each spec class in robosuite's tables (all, or none on a conflict);
-    ``replace`` lets a spec take a name robosuite uses itself, ``replace_ours`` one a spec of ours has
-    (an experiment's variant of it). Returns the names installed."""
-    classes = list(spec_classes)
-    problems = [problem for cls in classes if (problem := _conflict(cls, replace, replace_ours))]
+    """Put the robosuite class of each spec class (or registration record) in robosuite's tables
+    (all, or none on a conflict); ``replace`` lets a spec take a name robosuite uses itself,
+    ``replace_ours`` one a spec of ours has (an experiment's variant of it). Returns the names
+    installed."""
+    items = list(spec_classes)
+    problems = [problem for item in items if (problem := _conflict(item, replace, replace_ours))]
     if problems:
         raise RegistryError(problems)
-    made = [
-        (cls, robot_class(cls) if issubclass(cls, ManipulatorModel) else robosuite_class_of(cls))
-        for cls in classes
-    ]
-    replacing = [cls.__name__ for cls in classes if robosuite_has(family_of(cls), cls.__name__)]
-    for cls, robosuite_cls in made:
-        _write(cls, robosuite_cls)
+    made = [(item, _robosuite_class(item)) for item in items]
+    names = [_family_and_name(item) for item in items]
+    replacing = [name for family, name in names if robosuite_has(family, name)]
+    for item, robosuite_cls in made:
+        _write(item, robosuite_cls)
     if replacing:
         _replaced.extend(name for name in replacing if name not in _replaced)
         LOG.info("robosuite's %s replaced by the specs of the same names", ", ".join(replacing))
-    return [cls.__name__ for cls in classes]
+    return [name for _, name in names]
 
 
-def _write(spec_class: type[PartModel], robosuite_cls: type) -> None:
-    family, name = family_of(spec_class), spec_class.__name__
+def _write(item: Installable, robosuite_cls: type) -> None:
+    family, name = _family_and_name(item)
     table, module = TABLES[family]
     robosuites_own = robosuite_has(family, name)
     if family == "gripper" and name == NULL_GRIPPER:
@@ -137,14 +173,14 @@ def _write(spec_class: type[PartModel], robosuite_cls: type) -> None:
         table[name] = robosuite_cls
     if robosuites_own:
         setattr(module, name, robosuite_cls)  # robosuite's tests import classes by module attribute
-    if issubclass(spec_class, ManipulatorModel):
+    if family == "robot":
         if robosuites_own:
             CONFIGS.robosuites_own.add(name)
         else:
-            ROBOT_CLASS_MAPPING.setdefault(
-                name, getattr(robosuite_robot_types, robot_type_name(spec_class))
-            )  # robosuite's names keep theirs
-        CONFIGS.robots[name] = spec_class
+            robot_type = item.robot_type if isinstance(item, Registration) else robot_type_name(item)  # type: ignore[arg-type]
+            # robosuite's names keep theirs
+            ROBOT_CLASS_MAPPING.setdefault(name, getattr(robosuite_robot_types, robot_type))
+        CONFIGS.robots[name] = robosuite_cls
 
 
 def replaced() -> list[str]:
@@ -154,4 +190,4 @@ def replaced() -> list[str]:
 
 def installed(family: str) -> list[str]:
     """The names of ``family`` (robot, gripper or base) whose robosuite class is one of ours."""
-    return sorted(cls.__name__ for cls in TABLES[family][0].values() if ours(cls) is not None)
+    return sorted(cls.__name__ for cls in TABLES[family][0].values() if is_ours(cls))

@@ -23,6 +23,7 @@ no class of its own). Grippers and bases likewise (:mod:`assembler.robosuite.par
 from __future__ import annotations
 
 import warnings
+from collections.abc import Sequence
 from typing import Any, ClassVar, TypeVar
 
 import numpy as np
@@ -249,6 +250,25 @@ def our_part(registry: Registry[P], given: Any) -> type[P]:
 
 def robot_class(assembler_class: type[ManipulatorModel]) -> type[SpecRobot]:
     """The robosuite robot class of a spec robot (not yet in robosuite's registries)."""
+    check_offsets(assembler_class)
+    return robosuite_robot(assembler_class.spec.name, assembler_class.spec.arms, assembler_class)
+
+
+def robosuite_robot(name: str, arms: Sequence[str], assembler_class: object) -> type[SpecRobot]:
+    """The robosuite robot class ``name`` with ``arms``, whose ``assembler_class`` is the spec class
+    or what stands for it until it is read (a registration record's
+    :class:`~assembler.robosuite.registrations.SpecClassOf`)."""
+    namespace: dict[str, Any] = {
+        "assembler_class": assembler_class,
+        "arms": list(arms),
+        "__module__": __name__,
+        "__doc__": f"{name} from its spec, for robosuite's environments.",
+    }
+    return QuietMeta(name, (SpecRobot,), namespace)
+
+
+def check_offsets(assembler_class: type[ManipulatorModel]) -> None:
+    """Raise the spec's error when robosuite cannot read one of its ``base_xpos_offset`` arenas."""
     spec = assembler_class.spec
     problems = []
     for arena in spec.base_xpos_offset:
@@ -260,13 +280,6 @@ def robot_class(assembler_class: type[ManipulatorModel]) -> type[SpecRobot]:
             problems.append(assembler_class.spec_problem(path, message))
     if problems:
         raise SpecError(problems)
-    namespace: dict[str, Any] = {
-        "assembler_class": assembler_class,
-        "arms": list(spec.arms),
-        "__module__": __name__,
-        "__doc__": f"{spec.name} from its spec, for robosuite's environments.",
-    }
-    return QuietMeta(spec.name, (SpecRobot,), namespace)
 
 
 def _three_numbers(spec: Any, arena: str) -> bool:
