@@ -22,10 +22,10 @@ from assembler.files.paths import PACKAGE_SCHEME, display_path
 from assembler.files.repositories import MARKER
 from assembler.files.writing import write_atomically
 from assembler.importers.actuator_fixes import actuator_fixes, fixes_entry
-from assembler.importers.decisions import robot_entries
+from assembler.importers.decisions import Jaw, robot_entries
 from assembler.importers.entries import Entry, spec_text
 from assembler.importers.hands import gripper_entries
-from assembler.importers.jaws import jaw_entries, jaw_of
+from assembler.importers.jaws import jaw_entries, jaw_of, jaws_of
 from assembler.importers.legged import legged_entries
 from assembler.importers.naming import camel_case, free_name, name_source
 from assembler.importers.packages import BesidePackage, declaration, found_packages, packages_beside
@@ -38,7 +38,7 @@ from assembler.importers.reading import (
 )
 from assembler.importers.robosuite_names import robosuite_names
 from assembler.importers.scene import scene_cut, scene_entry
-from assembler.importers.tree import read_tree
+from assembler.importers.tree import Tree, read_tree
 from assembler.importers.wheels import base_entries, is_wheeled_base
 from assembler.registry.catalog import load_shipped_specs
 from assembler.registry.lookup import registered_names
@@ -54,7 +54,7 @@ NAME_ENDINGS: dict[str, str] = {"robot": "Arm", "gripper": "Hand", "base": "Base
 ARM_WITH_HAND = re.compile(r"with_?(hand|gripper)", re.IGNORECASE)
 """Words that say the file is an arm carrying its hand (``xarm6_with_gripper.urdf``)."""
 
-__all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec", "write_spec_and_jaw"]
+__all__ = ["NewSpec", "new_spec", "snake_case", "write_new_spec", "write_spec_and_jaws"]
 
 
 @dataclass(frozen=True)
@@ -66,13 +66,24 @@ class NewSpec:
     kind: Kind
     packages: tuple[BesidePackage, ...] = ()
     """ROS packages the URDF names that only a folder beside it holds, and what the user adds."""
-    jaw: NewSpec | None = None
-    """The gripper spec of the jaw cut from an arm's file (:mod:`~assembler.importers.jaws`), written
-    beside the arm's spec (:meth:`jaw_path`)."""
+    jaws: tuple[NewSpec, ...] = ()
+    """The gripper specs of the jaws cut from an arm's file (:mod:`~assembler.importers.jaws`): one of a
+    one-arm robot, one per hand of a bimanual robot (right first); each written beside the robot's spec
+    (:meth:`jaw_paths`)."""
+
+    def jaw_paths(self, spec_path: Path) -> tuple[Path, ...]:
+        """Where the jaws' specs go when the robot's goes to ``spec_path``: beside it, each named after
+        its spec."""
+        return tuple(spec_path.with_name(snake_case(jaw.name) + ".yaml") for jaw in self.jaws)
+
+    @property
+    def jaw(self) -> NewSpec | None:
+        """The first of :attr:`jaws` (a one-arm robot's only one), for a caller that names one."""
+        return self.jaws[0] if self.jaws else None
 
     def jaw_path(self, spec_path: Path) -> Path | None:
-        """Where the jaw's spec goes when the arm's goes to ``spec_path``: beside it, named after it."""
-        return None if self.jaw is None else spec_path.with_name(snake_case(self.jaw.name) + ".yaml")
+        """Where the first jaw's spec goes (:meth:`jaw_paths`), for a caller that names one."""
+        return next(iter(self.jaw_paths(spec_path)), None)
 
 
 def _kind(file: ModelFile) -> tuple[Kind, str]:
@@ -173,7 +184,7 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
     ]
     file_fixes = fixes_entry(scene_entry(cut) if cut is not None else None, repaired)
     entries += [file_fixes] if file_fixes is not None else []
-    jaw = None
+    jaws: dict[str, Jaw] = {}
     if chosen == "gripper":
         entries += gripper_entries(file, tree)
     elif chosen == "base":
@@ -181,24 +192,40 @@ def new_spec(model_path: Path, spec_path: Path, kind: Kind | None = None, strict
     elif tree.limbs is not None:
         entries += legged_entries(file, tree)
     else:
-        jaw = jaw_of(file.model, tree, free_name(f"{name}Jaw", {*taken, name}, "Gripper"))
-        entries += robot_entries(file, tree, jaw)
+        jaws = _jaws(file, tree, name, {*taken, name})
+        entries += robot_entries(file, tree, jaws)
     if chosen == "robot" and kind is None:
         what = "a robot with feet" if tree.limbs is not None else "a robot arm"
         entries[0].guess(f"{what}: {why}; a hand: assembler new --kind gripper")
-    jaw_spec = None
-    if jaw is not None:
+    jaw_specs = []
+    for side, jaw in jaws.items():
+        which = f"{side} " if tree.arms else ""  # a bimanual robot's right or left
         jaw_fields = [
-            Entry("kind", "gripper").guess(f"the jaw of {name}'s file, cut from the arm"),
-            Entry("name", jaw.name).guess(f"{name}'s jaw; the registry and class name, yours to choose"),
-            Entry("description", f"The jaw of {source}, from {Path(file.reference).name}."),
+            Entry("kind", "gripper").guess(f"the jaw of {name}'s file, cut from the {which}arm"),
+            Entry("name", jaw.name).guess(
+                f"{name}'s {which}jaw; the registry and class name, yours to choose"
+            ),
+            Entry("description", f"The {which}jaw of {source}, from {Path(file.reference).name}."),
             _file_entry(file, spec_path),
         ]
         jaw_fixes = fixes_entry(None, [each for each in repaired if each.joint in jaw.joints])
         jaw_fields += [jaw_fixes] if jaw_fixes is not None else []
-        jaw_fields += jaw_entries(file, jaw, tree)
-        jaw_spec = NewSpec(spec_text(_header(file), jaw_fields), jaw.name, "gripper")
-    return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages), jaw_spec)
+        grip_site = tree.arms[side].grip_site if tree.arms else tree.grip_site
+        jaw_fields += jaw_entries(file, jaw, grip_site)
+        jaw_specs.append(NewSpec(spec_text(_header(file), jaw_fields), jaw.name, "gripper"))
+    return NewSpec(spec_text(_header(file), entries), name, chosen, tuple(packages), tuple(jaw_specs))
+
+
+def _jaws(file: ModelFile, tree: Tree, name: str, taken: set[str]) -> dict[str, Jaw]:
+    """The hands cut from the arms of ``name``'s file, by arm: a one-arm robot's jaw ``<name>Jaw``, a
+    bimanual robot's ``<name>RightJaw`` and ``<name>LeftJaw`` (:mod:`~assembler.importers.jaws`)."""
+    if not tree.arms:
+        jaw = jaw_of(file.model, tree, free_name(f"{name}Jaw", taken, "Gripper"))
+        return {} if jaw is None else {"right": jaw}
+    names: dict[str, str] = {}
+    for side in tree.arms:
+        names[side] = free_name(f"{name}{side.title()}Jaw", {*taken, *names.values()}, "Gripper")
+    return jaws_of(file.model, tree, names)
 
 
 def snake_case(name: str) -> str:
@@ -225,26 +252,27 @@ def write_new_spec(
         raise AssemblerError(
             f"{display_path(marker)}: exists; add what new would write to it: {toml.splitlines()[-1]}"
         )
-    write_spec_and_jaw(written, target, force)
+    write_spec_and_jaws(written, target, force)
     if toml is not None:
         write_atomically(marker, toml)
     return written, target
 
 
-def write_spec_and_jaw(written: NewSpec, target: Path, force: bool) -> None:
-    """Write ``written`` to ``target`` and its jaw's spec beside it, if it has one: both or neither; an
+def write_spec_and_jaws(written: NewSpec, target: Path, force: bool) -> None:
+    """Write ``written`` to ``target`` and its jaws' specs beside it, if it has any: all or none; an
     existing jaw spec is kept unless ``force``."""
-    jaw_target = written.jaw_path(target)
-    if jaw_target is not None and os.path.lexists(jaw_target) and not force:
-        raise AssemblerError(
-            f"{display_path(jaw_target)}: exists (the spec of {written.name}'s jaw goes there); keep it, or "
-            "give --force to replace it"
-        )
-    if jaw_target is not None and written.jaw is not None:
-        write_atomically(jaw_target, written.jaw.text)
+    jaw_targets = written.jaw_paths(target)
+    for jaw_target in jaw_targets:
+        if os.path.lexists(jaw_target) and not force:
+            raise AssemblerError(
+                f"{display_path(jaw_target)}: exists (the spec of {written.name}'s jaw goes there); keep "
+                "it, or give --force to replace it"
+            )
     try:
+        for jaw_target, jaw in zip(jaw_targets, written.jaws, strict=True):
+            write_atomically(jaw_target, jaw.text)
         write_atomically(target, written.text)
     except BaseException:
-        if jaw_target is not None:  # no jaw spec without the arm's spec naming it
+        for jaw_target in jaw_targets:  # no jaw spec without the robot's spec naming it
             jaw_target.unlink(missing_ok=True)
         raise

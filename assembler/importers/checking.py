@@ -7,17 +7,19 @@ from __future__ import annotations
 from pathlib import Path
 
 from assembler.errors import AssemblerError
-from assembler.registry.catalog import register_specs
+from assembler.registry.catalog import register_specs, register_with_siblings
 from assembler.registry.instances import assemble, create_base, create_gripper
 
 
 def build_problems(spec_path: Path, kind: str, jaw_path: Path | None = None) -> list[str]:
-    """The lines saying why the spec at ``spec_path`` (with the spec of its jaw at ``jaw_path``, if any)
-    does not build, or none when it builds."""
+    """The lines saying why the spec at ``spec_path`` does not build, or none when it builds. It is
+    registered with the specs beside it, as ``assembler build SPEC`` registers it: every jaw spec
+    ``new`` wrote beside it (a bimanual robot's two) is found so; ``jaw_path``, one of them, is
+    registered first, so that a broken spec beside them hides no jaw."""
     try:
-        if jaw_path is not None:  # first: the arm's spec names it
+        if jaw_path is not None:
             register_specs(jaw_path)
-        (registered,) = register_specs(spec_path)
+        (registered,) = register_with_siblings([spec_path])
         if kind == "gripper":
             create_gripper(registered.__name__).compile_alone()
         elif kind == "base":

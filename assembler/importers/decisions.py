@@ -10,7 +10,7 @@ import mujoco
 
 from assembler.importers.entries import Entry
 from assembler.importers.entries import short as _short
-from assembler.importers.physics import home_pose, joint_id, scalar_joints
+from assembler.importers.physics import home_pose, overlaps, scalar_joints
 from assembler.importers.reading import ModelFile
 from assembler.importers.servos import actuated_joints, actuator_entry, actuator_label
 from assembler.importers.tree import FINGER_BODY_WORDS, Tree
@@ -25,22 +25,13 @@ STAND_IN_BASE = "Pedestal"
 NO_RULES = {"frictionloss": None, "damping": None, "armature": None}
 
 
-OVERLAP = 0.002
-"""m: the deepest overlap of two of the robot's geoms at its home pose said as a problem."""
-
-
 def _overlap(model: mujoco.MjModel, joints: tuple[str, ...], pose: list[float]) -> str:
     """The deepest overlap of two geoms at ``pose`` beyond :data:`OVERLAP`, as words; "" if none."""
-    data = mujoco.MjData(model)
-    for name, value in zip(joints, pose, strict=True):
-        data.qpos[model.jnt_qposadr[joint_id(model, name)]] = value
-    mujoco.mj_forward(model, data)
-    contacts = [data.contact[i] for i in range(data.ncon) if data.contact[i].dist < -OVERLAP]
-    if not contacts:
+    found = overlaps(model, joints, pose)
+    if not found:
         return ""
-    deepest = min(contacts, key=lambda contact: contact.dist)
-    bodies = [model.body(int(model.geom_bodyid[g])).name for g in (deepest.geom1, deepest.geom2)]
-    return f"the bodies {bodies[0]} and {bodies[1]} overlap by {-deepest.dist * 1000:.0f} mm"
+    first, second, depth = found[0]
+    return f"the bodies {first} and {second} overlap by {depth * 1000:.0f} mm"
 
 
 def init_qpos_entry(file: ModelFile, joints: tuple[str, ...]) -> Entry | None:
@@ -141,12 +132,14 @@ def file_joint_values() -> Entry:
     )
 
 
-def robot_entries(file: ModelFile, tree: Tree, jaw: Jaw | None = None) -> list[Entry]:
-    """The fields of an arm's (or a bimanual robot's) spec after its name and file; ``jaw``: the file's
-    hand, cut from the arm and made the gripper of that name (:mod:`~assembler.importers.jaws`)."""
+def robot_entries(file: ModelFile, tree: Tree, jaws: dict[str, Jaw] | None = None) -> list[Entry]:
+    """The fields of an arm's (or a bimanual robot's) spec after its name and file; ``jaws``: by arm,
+    the file's hand cut from that arm and made the gripper of its name (:mod:`~assembler.importers.jaws`)."""
+    jaws = jaws or {}
     entries = balance_entry(file)
-    entries += _two_arms(file, tree) if tree.arms else _one_arm(file, tree, jaw)
-    own = tuple(name for name in tree.joints if jaw is None or name not in jaw.joints)  # the jaw's go with it
+    entries += _two_arms(file, tree, jaws) if tree.arms else _one_arm(file, tree, jaws.get("right"))
+    cut = {name for jaw in jaws.values() for name in jaw.joints}
+    own = tuple(name for name in tree.joints if name not in cut)  # a jaw's joints go with it
     pose = init_qpos_entry(file, own)
     entries += [pose] if pose else []
     entries.append(file_joint_values())
@@ -188,9 +181,10 @@ def _parts(tree: Tree) -> tuple[dict[str, list[str]], str]:
     return groups, "".join(f"; {part}: {_short(joints)}" for part, joints in groups.items())
 
 
-def _two_arms(file: ModelFile, tree: Tree) -> list[Entry]:
+def _two_arms(file: ModelFile, tree: Tree, jaws: dict[str, Jaw]) -> list[Entry]:
     """Morphology, end effectors, joint groups and grippers of a robot with two arms on one root body
-    (:func:`~assembler.importers.tree.read_tree`): Baxter, YuMi, a bimanual torso."""
+    (:func:`~assembler.importers.tree.read_tree`): Baxter, YuMi, a bimanual torso; ``jaws``: the hands
+    cut from their arms, by side."""
     right, left = tree.arms["right"], tree.arms["left"]
     how = "by their joints' names" if tree.arms_by_name else "by the side of the root each lies on (+y: left)"
     entries = [
@@ -202,8 +196,16 @@ def _two_arms(file: ModelFile, tree: Tree) -> list[Entry]:
             "a right and a left arm, driven as one robot (robosuite's Baxter)"
         ),
     ]
-    eef = Entry("eef_bodies", {side: arm.eef_body for side, arm in tree.arms.items()})
-    hows = {side: _eef_how(arm.eef_by_name, bool(arm.fingers)) for side, arm in tree.arms.items()}
+    eef = Entry(
+        "eef_bodies",
+        {side: jaws[side].mount if side in jaws else arm.eef_body for side, arm in tree.arms.items()},
+    )
+    hows = {
+        side: "the body its hand (cut below, the gripper) hangs from"
+        if side in jaws
+        else _eef_how(arm.eef_by_name, bool(arm.fingers))
+        for side, arm in tree.arms.items()
+    }
     if hows["right"] == hows["left"]:
         eef.guess(f"on each arm {hows['right']}; grippers are mounted here")
     else:
@@ -212,46 +214,66 @@ def _two_arms(file: ModelFile, tree: Tree) -> list[Entry]:
         if arm.grip_site:
             eef.guess(f"the {side} arm's grip frame is the site {arm.grip_site}")
     entries.append(eef)
+    if jaws:
+        said = "; ".join(f"{side}: {_short(jaw.joints, 3)}" for side, jaw in jaws.items())
+        names = " and ".join(jaw.name for jaw in jaws.values())
+        grippers = (
+            f"the grippers {names}, whose specs" if len(jaws) == 2 else f"the gripper {names}, whose spec"
+        )
+        entries.append(
+            Entry("remove_bodies", [jaw.hand for jaw in jaws.values()]).guess(
+                f"each hand and its jaw ({said}) are cut from its arm and made {grippers} (beside this "
+                "one) take them from the same file, so robosuite gives each jaw an action"
+            )
+        )
     parts, said = _parts(tree)
     joints = Entry("joint_groups", {"right": list(right.joints), "left": list(left.joints), **parts}).guess(
         f"each arm is its side's chain of joints from the root to its deepest link{said}"
     )
-    if tree.fingers:
+    cut = {name for jaw in jaws.values() for name in jaw.joints}
+    kept = [name for name in tree.fingers if name not in cut]
+    if kept:
         joints.decide(
-            f"{_short(tree.fingers)} move the hands that are part of this file: they are listed in no group, "
+            f"{_short(kept)} move the hands that are part of this file: they are listed in no group, "
             "so that robosuite's arm controllers do not drive them; list each hand's under its arm's side "
             "if it should"
         )
     entries.append(joints)
-    entries.append(_two_grippers(file, tree))
+    entries.append(_two_grippers(file, tree, jaws))
     return entries
 
 
-def _two_grippers(file: ModelFile, tree: Tree) -> Entry:
-    """Each arm's gripper: none on a hand of the file's own (``new`` cuts a jaw only from an arm's file
-    with one arm), else the shipped gripper."""
-    hands = {side: arm.fingers for side, arm in tree.arms.items() if arm.fingers}
+def _two_grippers(file: ModelFile, tree: Tree, jaws: dict[str, Jaw]) -> Entry:
+    """Each arm's gripper: its hand cut from the file (``jaws``), none on a hand of the file's own that
+    could not be cut, else the shipped gripper."""
+    hands = {side: arm.fingers for side, arm in tree.arms.items() if arm.fingers and side not in jaws}
     fixed = {side: _fixed_fingers(file.model, arm.eef_body) for side, arm in tree.arms.items()}
-    grippers = {side: None if side in hands or fixed[side] else DEFAULT_GRIPPER for side in tree.arms}
+    grippers: dict[str, str | None] = {
+        side: jaws[side].name if side in jaws else None if side in hands or fixed[side] else DEFAULT_GRIPPER
+        for side in tree.arms
+    }
     entry = Entry("default_grippers", grippers)
+    if jaws:
+        entry.guess(
+            f"the file's own {'hands' if len(jaws) == 2 else 'hand'}, each the gripper of its arm; any "
+            "registered gripper (assembler list grippers) in a hand's place"
+        )
     if hands:
         said = "; ".join(f"{side}: {_short(joints, 3)}" for side, joints in hands.items())
         roots = ", ".join(tree.arms[side].eef_body for side in hands)
         entry.decide(
-            f"each hand is the file's own ({said}): no gripper is added on top of it, and its fingers stay "
-            "in the arm without a robosuite action (new cuts a jaw into a gripper only from a file of one "
-            f"arm). To give each hand an action: a gripper spec per hand taking it from this file "
-            f"(root_body: {roots}), the hands under remove_bodies, the arms' eef_bodies their parents and "
-            "the grippers' names here; or any registered gripper (assembler list grippers) in a hand's "
-            "place"
+            f"{'each hand is' if len(hands) == 2 else 'the hand is'} the file's own ({said}): no gripper is "
+            "added on top of it, and its fingers stay in the arm without a robosuite action: new cuts a hand "
+            "into a gripper only where it is welded to its arm (no joint of its own), holds no joint but its "
+            f"fingers, and its actuators have names ({roots}: docs/add-your-robot.md)"
         )
     for side, names in fixed.items():
-        if names and side not in hands:
+        if names and side not in hands and side not in jaws:
             entry.decide(
                 f"the {side} arm has its own hand, fixed ({_short(names, 3)}: bodies named like fingers "
                 "below the end effector, without joints): no gripper is added on top of it"
             )
-    bare = [side for side, gripper in grippers.items() if gripper]
+    bare = [side for side, gripper in grippers.items() if gripper == DEFAULT_GRIPPER]
     if bare:
         where = "either arm" if len(bare) == 2 else f"the {bare[0]} arm"
         entry.guess(

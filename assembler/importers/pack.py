@@ -26,7 +26,7 @@ from assembler.cache.dependencies import asset_files
 from assembler.errors import AssemblerError
 from assembler.files.paths import display_path
 from assembler.files.writing import copy_atomically, make_folder, write_atomically
-from assembler.importers import Kind, NewSpec, new_spec, snake_case, write_spec_and_jaw
+from assembler.importers import Kind, NewSpec, new_spec, snake_case, write_spec_and_jaws
 from assembler.importers.reading import check_model_path, read_model_file
 
 LICENCE = re.compile(r"^(licen[cs]e|copying|notice)([.-].*)?$", re.IGNORECASE)
@@ -152,5 +152,5 @@ def write_pack(
     target = pack / package / "specs" / f"{snake_case(written.name)}.yaml"
     if target.exists() and not force:
         raise AssemblerError(f"{display_path(target)}: exists; keep it, or give --force to replace it")
-    write_spec_and_jaw(written, target, force)
+    write_spec_and_jaws(written, target, force)
     return WrittenPack(written, target, package, len(copies), tuple(licences), written_pyproject)

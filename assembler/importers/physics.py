@@ -1,5 +1,6 @@
 """Numbers ``assembler new`` reads off the compiled model: a home pose inside every joint's range,
-and a torque (or force) limit per joint for the motors it adds to a file without actuators.
+the bodies that overlap there, and a torque (or force) limit per joint for the motors it adds to a file
+without actuators.
 """
 
 from __future__ import annotations
@@ -100,3 +101,26 @@ def posed_data(model: mujoco.MjModel) -> mujoco.MjData:
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
     return data
+
+
+OVERLAP = 0.002
+"""m: the deepest overlap of two of the robot's geoms at its home pose said as a problem."""
+
+
+def overlaps(
+    model: mujoco.MjModel, joints: tuple[str, ...], pose: list[float]
+) -> list[tuple[str, str, float]]:
+    """The pairs of bodies whose geoms overlap by more than :data:`OVERLAP` at ``pose`` (values of
+    ``joints``, the rest at qpos0), each once with its deepest overlap in m, deepest first."""
+    data = mujoco.MjData(model)
+    for name, value in zip(joints, pose, strict=True):
+        data.qpos[model.jnt_qposadr[joint_id(model, name)]] = value
+    mujoco.mj_forward(model, data)
+    deepest: dict[tuple[str, str], float] = {}
+    for contact in (data.contact[i] for i in range(data.ncon)):
+        if contact.dist < -OVERLAP:
+            first, second = (
+                model.body(int(model.geom_bodyid[g])).name for g in (contact.geom1, contact.geom2)
+            )
+            deepest[first, second] = max(deepest.get((first, second), 0.0), -float(contact.dist))
+    return sorted(((*pair, depth) for pair, depth in deepest.items()), key=lambda item: -item[2])

@@ -188,7 +188,7 @@ CASES: tuple[Case, ...] = (
         share=True,
         name="G1Corpus",
     ),
-    # Two arms on one torso: written bimanual, each hand left in its arm (new cuts a jaw from a one-arm file)
+    # Two arms on one torso: written bimanual, each hand cut from its arm into a gripper spec of its own
     Case(
         "baxter",
         ERD,

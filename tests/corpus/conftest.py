@@ -25,8 +25,9 @@ class Corpus:
         self.before: dict[str, str | None] = {}
         self.environments: dict[str, dict[str, str]] = {}
         """Case -> the variables ``new`` told the user to export for it."""
-        self.jaws: dict[str, Path] = {}
-        """Case -> the spec of the jaw ``new`` cut from the arm's file, written beside the arm's."""
+        self.jaws: dict[str, tuple[Path, ...]] = {}
+        """Case -> the specs of the jaws ``new`` cut from the arm's file (a bimanual robot's two),
+        written beside the arm's."""
 
     def model_file(self, case: Case) -> Path:
         path = case.path()
@@ -42,19 +43,17 @@ class Corpus:
             written, _ = write_new_spec(self.model_file(case), target)
             self.environments[case.id] = environment(written.packages)  # new's "to do: export ..."
             self._export(case)
-            jaw = written.jaw_path(target)
-            if case.name is not None:  # the one field a user changes here (see Case.name), and its jaw's
-                names = {written.name: case.name}
-                if written.jaw is not None:
-                    names[written.jaw.name] = f"{case.name}Jaw"
-                for path in (target, jaw):
-                    if path is not None:
-                        text = path.read_text()
-                        for old, new in names.items():
-                            text = re.sub(rf"\b{old}\b", new, text)
-                        path.write_text(text)
-            if jaw is not None:
-                self.jaws[case.id] = jaw
+            jaws = written.jaw_paths(target)
+            if case.name is not None:  # the one field a user changes here (see Case.name), and its jaws'
+                names = {written.name: case.name}  # PandaArmJaw -> PandaErdJaw, BaxterArmLeftJaw -> ...
+                names |= {jaw.name: case.name + jaw.name.removeprefix(written.name) for jaw in written.jaws}
+                for path in (target, *jaws):
+                    text = path.read_text()
+                    for old, new in names.items():
+                        text = re.sub(rf"\b{old}\b", new, text)
+                    path.write_text(text)
+            if jaws:
+                self.jaws[case.id] = jaws
         return target
 
     def _export(self, case: Case) -> None:
@@ -65,11 +64,11 @@ class Corpus:
 
     def name(self, case: Case) -> str:
         """The case's spec registered (again: each test starts from the shipped registry), by name; the
-        spec of the jaw ``new`` cut from the arm's file first, which the arm's spec names."""
+        specs of the jaws ``new`` cut from the arm's file first, which the arm's spec names."""
         spec = self.spec(case)
         self._export(case)  # each case's own: two cases' packages may share a name (pybullet's 'meshes')
         if case.id in self.jaws:
-            register_specs(self.jaws[case.id])
+            register_specs(*self.jaws[case.id])
         (registered,) = register_specs(spec)
         return registered.__name__
 

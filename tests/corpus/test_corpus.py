@@ -91,8 +91,8 @@ def _cases(stage: str, arms_only: bool = False, robots_only: bool = False) -> li
 
 
 def _part(case: Case, corpus: Corpus) -> Any:
-    """The case's part as ``new`` wrote it; an arm whose jaw ``new`` cut from the file with that jaw
-    as its gripper (together they are the vendor's file), every other robot alone."""
+    """The case's part as ``new`` wrote it; an arm whose jaws ``new`` cut from the file with those jaws
+    as its grippers (together they are the vendor's file), every other robot alone."""
     name = corpus.name(case)
     if case.id in corpus.jaws:
         return assembler.assemble(name, base=None)
@@ -176,6 +176,9 @@ JAWS = (
 )
 """Arms whose file holds their own jaw (Baxter: one on each arm)."""
 
+TWO_HANDS = ("baxter",)
+"""Bimanual robots whose file holds a hand on each arm, each cut into a gripper of its own."""
+
 
 @pytest.mark.parametrize("case", [p for p in _cases("jaw") if p.values[0].id in JAWS])
 def test_a_jaw_in_the_arms_file_is_the_robots_gripper_or_left_out_of_the_arm(
@@ -183,9 +186,8 @@ def test_a_jaw_in_the_arms_file_is_the_robots_gripper_or_left_out_of_the_arm(
 ) -> None:
     robot = _part(case, corpus)
     model = robot.get_model()
-    jaw = robot.spec.default_grippers.get("right")
-    if jaw is None:  # its hand turns on an arm joint (SO-101's wrist roll), or there are two hands: the
-        # jaws stay, out of the arms, each below its own arm's end effector
+    if not any(robot.spec.default_grippers.values()):  # its hand turns on an arm joint (SO-101's wrist
+        # roll): the jaw stays, out of the arm, below its end effector
         for arm in robot.arms:
             hand = robot.eef_name[arm]
             below = {
@@ -195,13 +197,16 @@ def test_a_jaw_in_the_arms_file_is_the_robots_gripper_or_left_out_of_the_arm(
             }
             assert below and not below & set(robot.arm_joints)
         return
-    gripper = robot.grippers["right"]
-    assert robot.spec.remove_bodies == [gripper.spec.root_body]  # cut from the arm, made the gripper
-    assert gripper.dof >= 1  # an action that opens and closes it
-    jaw_joints = [
-        model.joint(j).name for j in range(model.njnt) if model.joint(j).name.startswith("gripper0_")
-    ]
-    assert jaw_joints and not set(robot.arm_joints) & set(jaw_joints)
+    grippers = [robot.grippers[arm] for arm in robot.arms]  # each arm's own hand (Baxter's two)
+    assert robot.spec.remove_bodies == [g.spec.root_body for g in grippers]  # cut, made the grippers
+    for gripper in grippers:
+        assert gripper.dof >= 1  # an action that opens and closes it
+        jaw_joints = [
+            model.joint(j).name
+            for j in range(model.njnt)
+            if model.joint(j).name.startswith(gripper.naming_prefix)
+        ]
+        assert jaw_joints and not set(robot.arm_joints) & set(jaw_joints)
 
 
 def _ancestors(model: mujoco.MjModel, body: int) -> list[str]:
@@ -310,14 +315,14 @@ def test_the_arm_runs_200_steps_of_robosuites_lift(case: Case, corpus: Corpus) -
     robosuite = pytest.importorskip("robosuite", reason="robosuite is not installed (the robosuite extra)")
     bridge = pytest.importorskip("assembler.robosuite")
     name = corpus.name(case)
-    jaw = [str(corpus.jaws[case.id])] if case.id in corpus.jaws else []
-    bridge.register(*jaw, str(corpus.spec(case)))
+    jaws = [str(path) for path in corpus.jaws.get(case.id, ())]
+    bridge.register(*jaws, str(corpus.spec(case)))
     env = robosuite.make(
         "Lift", robots=name, has_renderer=False, has_offscreen_renderer=False, use_camera_obs=False
     )
     env.reset()
-    if jaw:  # the jaw cut from the arm's file is robosuite's gripper, with an action of its own
-        assert env.robots[0].gripper["right"].dof >= 1
+    for arm in env.robots[0].arms if jaws else ():  # each jaw cut from the file is robosuite's gripper
+        assert env.robots[0].gripper[arm].dof >= 1  # with an action of its own
     start = env.sim.data.qpos.copy()
     rng = np.random.default_rng(0)
     for _ in range(200):
@@ -325,6 +330,51 @@ def test_the_arm_runs_200_steps_of_robosuites_lift(case: Case, corpus: Corpus) -
     qpos = env.sim.data.qpos
     assert np.all(np.isfinite(qpos)) and not np.allclose(qpos, start)
     env.close()
+
+
+@pytest.mark.filterwarnings("ignore::assembler.errors.AssemblerWarning")
+@pytest.mark.parametrize("case", [p for p in _cases("lift", arms_only=True) if p.values[0].id in TWO_HANDS])
+@pytest.mark.parametrize("task", ["TwoArmLift", "Lift"])
+def test_each_hand_of_a_bimanual_robot_takes_an_action_that_opens_and_closes_it(
+    case: Case, corpus: Corpus, task: str
+) -> None:
+    """Each hand, cut from its arm into a gripper spec of its own, is robosuite's gripper of that arm:
+    the action has one dimension more per hand, and -1 opens it, +1 closes it (the fingers' qpos)."""
+    robosuite = pytest.importorskip("robosuite", reason="robosuite is not installed (the robosuite extra)")
+    bridge = pytest.importorskip("assembler.robosuite")
+    name = corpus.name(case)
+    bridge.register(*map(str, corpus.jaws[case.id]), str(corpus.spec(case)))
+    options = {"env_configuration": "single-robot"} if task.startswith("TwoArm") else {}
+    env = robosuite.make(
+        task, robots=name, has_renderer=False, has_offscreen_renderer=False, use_camera_obs=False, **options
+    )
+    env.reset()
+    robot = env.robots[0]
+    arms = sum(robot.part_controllers[arm].control_dim for arm in robot.arms)
+    assert [robot.gripper[arm].dof for arm in robot.arms] == [1, 1] and env.action_dim == arms + 2
+    model = env.sim.model
+    fingers = {  # each hand's finger joints, their ranges: which end is open is the file's
+        arm: [
+            j
+            for j in range(model.njnt)
+            if model.joint_id2name(j).startswith(robot.gripper[arm].naming_prefix)
+        ]
+        for arm in robot.arms
+    }
+    reached = {}
+    for value in (-1.0, 1.0):  # open both hands, then close them
+        action = robot.create_action_vector({robot.get_gripper_name(arm): [value] for arm in robot.arms})
+        for _ in range(30):
+            env.step(action)
+        reached[value] = env.sim.data.qpos.copy()
+    env.close()
+    for arm, joints in fingers.items():
+        assert joints, arm
+        for joint in joints:  # each finger travels at least 90% of its range between open and closed
+            address, (low, high) = model.jnt_qposadr[joint], model.jnt_range[joint]
+            assert abs(reached[-1.0][address] - reached[1.0][address]) > 0.9 * (high - low), (
+                model.joint_id2name(joint)
+            )
 
 
 @pytest.mark.filterwarnings("ignore::assembler.errors.AssemblerWarning")
