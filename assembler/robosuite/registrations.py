@@ -122,7 +122,8 @@ def registration_of(spec_class: type[PartModel]) -> Registration:
 
 
 class _Unrecorded(Exception):
-    """The held name's class is not made by its file (the index misread it): no record."""
+    """No record for the held name: its file does not make it (the index misread the file), or its
+    class is none robosuite takes."""
 
 
 def _held_file(family: str, name: str) -> Path | None:
@@ -170,17 +171,24 @@ def recorded(family: str, name: str) -> Registration | None:
         "name": name,
         "file": str(file),
     }
+
+    def emit() -> str:
+        try:
+            return registration_of(made[0]).to_json()
+        except RegistryError:  # not a class robosuite takes (a robot without arms): none to record
+            raise _Unrecorded from None
+
     key = buffer_digest(json.dumps(material, sort_keys=True).encode())
     try:
         path = recorded_text_file(
             content_folder(PARTS),
             key,
             read(),
-            lambda: registration_of(made[0]).to_json(),
+            emit,
             ".json",
             lambda: {path: (size, mtime) for path, size, mtime in _origins(made[0])},
         )
-    except (_Unrecorded, RegistryError):  # not a class robosuite takes: installed as before, if at all
+    except _Unrecorded:  # its class, made now if it has one, is installed as before (if at all)
         return None
     if made:
         return None
