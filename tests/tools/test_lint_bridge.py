@@ -35,9 +35,15 @@ NOT_ABOUT_A_SPEC: dict[tuple[str, str], str] = {
         "controllers.py",
         "FileNotFoundError(name)",
     ): "internal: caught by declared_config, which says RA708's words",
-    ("registrations.py", "robots with arms, grippers and bases only"): "a Python class that is no manipulator",
+    (
+        "registrations.py",
+        "robots with arms, grippers and bases only",
+    ): "a Python class that is no manipulator",
     ("registrations.py", "ValueError("): "internal: a registration record of another format, read again",
-    ("registrations.py", "_Unrecorded"): "internal: a held name its file does not define, looked up as before",
+    (
+        "registrations.py",
+        "_Unrecorded",
+    ): "internal: a held name its file does not define, looked up as before",
     ("registries.py", "RegistryError(problems)"): "a name robosuite's own classes take, in this environment",
     ("robot_class.py", "is made per spec"): "SpecRobot used directly instead of robot_class(name)",
     ("robot_class.py", "has no end-effector body named"): "robosuite's add_gripper called with a wrong body",
