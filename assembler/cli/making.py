@@ -17,6 +17,7 @@ import argparse
 import json
 import sys
 import time
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Literal
 
@@ -63,10 +64,10 @@ def run_new(args: argparse.Namespace) -> int:
     written, target = write_new_spec(model_file, output, args.kind, args.force, args.strict)
     # A package the user has still to declare is found for the check, as it will be once declared.
     pending = [package for package in written.packages if package.declared != "beside the spec"]
-    jaw = written.jaw_path(target)
+    jaws = written.jaw_paths(target)
     with found_packages(pending):
-        problems = build_problems(target, written.kind, jaw)
-    print(f"wrote {display_path(target)}{_and_jaw(jaw)}: {_what(written)}", end="")
+        problems = build_problems(target, written.kind, jaws)
+    print(f"wrote {display_path(target)}{_and_jaws(jaws)}: {_what(written)}", end="")
     if len(pending) < len(written.packages):
         print(f" and {display_path(target.parent / MARKER)}", end="")
     if not _built_as_written(problems, " once the packages below are found" if pending else ""):
@@ -78,14 +79,16 @@ def run_new(args: argparse.Namespace) -> int:
     return 0
 
 
-def _and_jaw(jaw: Path | None) -> str:
-    return "" if jaw is None else f" and {display_path(jaw)}"
+def _and_jaws(jaws: Sequence[Path]) -> str:
+    return "".join(f" and {display_path(jaw)}" for jaw in jaws)
 
 
 def _what(written: NewSpec) -> str:
-    """``robot Pincher with its jaw PincherJaw``: the kind and name of what ``new`` wrote."""
-    jaw = "" if written.jaw is None else f" with its jaw {written.jaw.name}"
-    return f"{written.kind} {written.name}{jaw}"
+    """``robot Pincher with its jaw PincherJaw`` (a bimanual robot's: ``with its jaws BaxterRightJaw and
+    BaxterLeftJaw``): the kind and name of what ``new`` wrote."""
+    names = [jaw.name for jaw in written.jaws]
+    jaws = f" with its jaw{'s' if len(names) > 1 else ''} {' and '.join(names)}" if names else ""
+    return f"{written.kind} {written.name}{jaws}"
 
 
 def _built_as_written(problems: list[str], found: str = "") -> bool:
@@ -108,11 +111,11 @@ def _pack(args: argparse.Namespace, model_file: Path) -> int:
         )
     pack = Path(args.pack)
     written = write_pack(model_file, pack, args.kind, args.force, args.strict)
-    jaw = written.spec.jaw_path(written.spec_path)
+    jaws = written.spec.jaw_paths(written.spec_path)
     with importable(pack.resolve()):  # the pack's package:// names resolve as once it is installed
-        problems = build_problems(written.spec_path, written.spec.kind, jaw)
+        problems = build_problems(written.spec_path, written.spec.kind, jaws)
     print(
-        f"wrote {display_path(written.spec_path)}{_and_jaw(jaw)}: {_what(written.spec)}, and "
+        f"wrote {display_path(written.spec_path)}{_and_jaws(jaws)}: {_what(written.spec)}, and "
         f"{written.copied} vendor files under {display_path(pack / written.package / 'assets')}",
         end="",
     )

@@ -76,15 +76,6 @@ class NewSpec:
         its spec."""
         return tuple(spec_path.with_name(snake_case(jaw.name) + ".yaml") for jaw in self.jaws)
 
-    @property
-    def jaw(self) -> NewSpec | None:
-        """The first of :attr:`jaws` (a one-arm robot's only one), for a caller that names one."""
-        return self.jaws[0] if self.jaws else None
-
-    def jaw_path(self, spec_path: Path) -> Path | None:
-        """Where the first jaw's spec goes (:meth:`jaw_paths`), for a caller that names one."""
-        return next(iter(self.jaw_paths(spec_path)), None)
-
 
 def _kind(file: ModelFile) -> tuple[Kind, str]:
     words = " ".join([file.source.pristine.modelname, file.path.stem, file.path.parent.name])

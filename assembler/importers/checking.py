@@ -4,6 +4,7 @@ stops it is returned as the user's lines (one per problem), never raised."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 from assembler.errors import AssemblerError
@@ -11,13 +12,13 @@ from assembler.registry.catalog import register_specs, register_with_siblings
 from assembler.registry.instances import assemble, create_base, create_gripper
 
 
-def build_problems(spec_path: Path, kind: str, jaw_path: Path | None = None) -> list[str]:
+def build_problems(spec_path: Path, kind: str, jaw_paths: Sequence[Path] = ()) -> list[str]:
     """The lines saying why the spec at ``spec_path`` does not build, or none when it builds. It is
-    registered with the specs beside it, as ``assembler build SPEC`` registers it: every jaw spec
-    ``new`` wrote beside it (a bimanual robot's two) is found so; ``jaw_path``, one of them, is
-    registered first, so that a broken spec beside them hides no jaw."""
+    registered with the specs beside it, as ``assembler build SPEC`` registers it; the jaw specs
+    ``new`` wrote beside it (``jaw_paths``: a bimanual robot's two) are registered first, so that a
+    broken spec beside them hides no jaw."""
     try:
-        if jaw_path is not None:
+        for jaw_path in jaw_paths:
             register_specs(jaw_path)
         (registered,) = register_with_siblings([spec_path])
         if kind == "gripper":

@@ -85,9 +85,10 @@ def _written(write: Callable[[str, str], Path], text: str) -> tuple[dict[str, ob
     ids=["sides by name", "sides by where the arms lie"],
 )
 def test_two_arms_on_one_torso_are_written_bimanual_each_hand_cut_into_its_own_gripper(
-    write: Callable[[str, str], Path], right: str, left: str
+    write: Callable[[str, str], Path], capsys: pytest.CaptureFixture[str], right: str, left: str
 ) -> None:
     fields, spec = _written(write, _robot(_arm(right, -0.2) + _arm(left, 0.2)))
+    said = capsys.readouterr().out
     assert fields["morphology"] == "manipulator" and fields["arm_type"] == "bimanual"
     arm = ["shoulder", "elbow", "wrist_pitch"]
     assert fields["joint_groups"] == {
@@ -104,6 +105,9 @@ def test_two_arms_on_one_torso_are_written_bimanual_each_hand_cut_into_its_own_g
     assert fields["default_grippers"] == {"right": f"{name}RightJaw", "left": f"{name}LeftJaw"}
     jaw_files = [spec.with_name(f"{snake_case(name)}_{side}_jaw.yaml") for side in ("right", "left")]
     assert sorted(spec.parent.iterdir()) == sorted([spec, spec.with_suffix(".xml"), *jaw_files])
+    # the line new ends with names every file it wrote and both jaws
+    assert f"{jaw_files[0].name} and " in said and f"{jaw_files[1].name}: robot {name} with its jaws " in said
+    assert f"with its jaws {name}RightJaw and {name}LeftJaw (validated and compiled)" in said
     for side, prefix, jaw_file in (("right", right, jaw_files[0]), ("left", left, jaw_files[1])):
         jaw = yaml.safe_load(jaw_file.read_text())
         assert (jaw["kind"], jaw["name"], jaw["root_body"], jaw["mjcf"]) == (
