@@ -81,9 +81,10 @@ def _tables(plain: RobotModel, robot: RobotModel) -> tuple[Resolved, Resolved]:
 
 def _plain_patch(
     robot: RobotModel, with_xml: bool = False, cache: bool = True, store: bool = True
-) -> tuple[mujoco.MjModel, ModelPatch, str] | None:
-    """The model of ``robot``'s plain robot, the patch that makes ``robot`` of it and (with
-    ``with_xml``; else "") the plain robot's XML; None, with the reason logged, when it must be
+) -> tuple[mujoco.MjModel, ModelPatch, str, str | None] | None:
+    """The model of ``robot``'s plain robot, the patch that makes ``robot`` of it, (with
+    ``with_xml``; else "") the plain robot's XML, and the plain robot's cache key (None with the
+    cache off); None, with the reason logged, when it must be
     compiled. Without ``with_xml`` only the cached model is used (a patch must cost less than the
     compile it saves); with it the plain robot's model and XML come from the cache, else from its
     compile (kept unless ``store`` is False), so the text is the same whatever the cache held."""
@@ -101,7 +102,7 @@ def _plain_patch(
         LOG.debug("%s compiled: the robot without its overrides is not in the model cache", robot.name)
         return None
     try:
-        return model, model_patch(model, *_tables(plain, robot)), xml
+        return model, model_patch(model, *_tables(plain, robot)), xml, base_key
     except NotPatchable as error:
         LOG.debug("%s compiled: %s", robot.name, error)
         return None
@@ -148,7 +149,7 @@ def patched_variant(robot: RobotModel) -> CompiledModel | None:
     found = _plain_patch(robot)
     if found is None:
         return None
-    model, patch, _ = found
+    model, patch, _, _ = found
     apply_patch(model, patch)  # load_entry's model is this caller's own (a copy when kept in memory)
     LOG.debug("%s patched from its plain robot's cached model: %s", robot.name, ", ".join(patch.fields))
     return CompiledModel(model, Keyframe.of(model))
@@ -164,7 +165,7 @@ def patched_variant_xml(
     found = _plain_patch(robot, with_xml=True, cache=cache, store=store)
     if found is None:
         return None
-    model, patch, xml = found
+    model, patch, xml, plain_key = found
     text = patched_text(model, XmlText(xml), patch)
     if text is None:
         LOG.debug("%s compiled for its XML: not writable as attribute edits", robot.name)
@@ -172,8 +173,6 @@ def patched_variant_xml(
     apply_patch(model, patch)
     LOG.debug("%s written from its plain robot's XML: %s", robot.name, ", ".join(patch.fields))
     key = robot.entry_key
-    if store and key is not None:  # a file written: the same request next time is answered from the cache
-        plain = _plain_key(robot, unpatched_class(type(robot))(idn=robot.idn))
-        if plain is not None:
-            default_store().save_patched(key, model, robot.name, text, plain)
+    if store and key is not None and plain_key is not None:  # a file written: next time from the cache
+        default_store().save_patched(key, model, robot.name, text, plain_key)
     return CompiledModel(model, Keyframe.of(model)), text

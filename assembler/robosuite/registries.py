@@ -25,12 +25,11 @@ from robosuite.models.robots.robot_model import REGISTERED_ROBOTS
 from robosuite.robots import ROBOT_CLASS_MAPPING
 
 from assembler.errors import Problem, RegistryError
-from assembler.models import ManipulatorModel, PartModel
+from assembler.models import REGISTRIES, ManipulatorModel, PartModel
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.conventions import robot_type_name
 from assembler.robosuite.part_classes import recorded_class, robosuite_class_of
-from assembler.robosuite.registrations import Registration, SpecClassOf
-from assembler.robosuite.registrations import family_of as family_of  # the name tests import from here
+from assembler.robosuite.registrations import Registration, SpecClassOf, family_of
 from assembler.robosuite.robot_class import robosuite_robot, robot_class
 from assembler.spec.fieldpath import FieldPath
 
@@ -63,7 +62,7 @@ def _family_and_name(item: Installable) -> tuple[str, str]:
 def _spec_class(item: Installable) -> type[PartModel]:
     """The spec class of ``item`` (a registration's is looked up: its spec read)."""
     if isinstance(item, Registration):
-        return SpecClassOf(item.family, item.name).__get__(None)
+        return REGISTRIES[item.family].lookup(item.name)
     return item
 
 

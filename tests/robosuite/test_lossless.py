@@ -21,7 +21,7 @@ from assembler.models import REGISTRIES, PartModel  # noqa: E402
 from assembler.robosuite.conventions import offered  # noqa: E402
 from assembler.robosuite.part_classes import robosuite_class_of  # noqa: E402
 from assembler.robosuite.parts import robosuite_part  # noqa: E402
-from assembler.robosuite.registries import family_of  # noqa: E402
+from assembler.robosuite.registrations import family_of  # noqa: E402
 from assembler.robosuite.robot_class import robot_class  # noqa: E402
 from tests.robosuite.exact import differences  # noqa: E402
 
