@@ -19,6 +19,7 @@ from assembler.cache.dependencies import Recorder
 from assembler.cache.requests import RequestRecord, default_request_store, folder_stats, request_key
 from assembler.compiler.stored import default_store, load_entry
 from assembler.files.cache_location import cache_disabled
+from assembler.patch.derived import kept_model
 
 Request = Mapping[str, Any]
 """A request as plain JSON data: what was asked for, exactly as given."""
@@ -65,8 +66,10 @@ def answered_model(request: KeyedRequest) -> mujoco.MjModel | None:
 
 
 def recorded_model(record: RequestRecord) -> mujoco.MjModel | None:
-    """The model a record names, if its entry is still there with its files unchanged."""
-    return load_entry(record.model_key)
+    """The model a record names, if its entry is still there with its files unchanged: stored, or
+    (a patched variant) made from the plain robot's entry by the patch kept in its place."""
+    model = load_entry(record.model_key)
+    return model if model is not None else kept_model(record.model_key)
 
 
 def recorded_xml(record: RequestRecord) -> str | None:

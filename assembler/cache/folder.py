@@ -39,8 +39,8 @@ IN_USE_SECONDS = 60.0
 (a converted mesh MuJoCo is about to read, a part file robosuite is about to parse): it is not
 evicted, though the folder may then stay above its bound for as long."""
 
-MODEL_FILE = re.compile(r"^\.?(?P<key>[0-9a-f]{40})(-[0-9a-f]{12}\.(mjb|xml)|\.json)(\.\w+\.tmp)?$")
-"""Model manifests, model and XML files and their temporary files (:mod:`assembler.cache.store`)."""
+MODEL_FILE = re.compile(r"^\.?(?P<key>[0-9a-f]{40})(-[0-9a-f]{12}\.(mjb|xml)|\.json|\.patch)(\.\w+\.tmp)?$")
+"""Model manifests, model and XML files, patches and their temporary files (:mod:`assembler.cache.store`)."""
 
 MESH_FILE = re.compile(r"^\.?(\d+-[0-9a-f]{40}\.(msh|claim)|[0-9a-f]{40}\.src)(\.\w+\.tmp)?$")
 """Decoded meshes, claims, source records and their temporary files (:mod:`assembler.cache.meshes`)."""

@@ -16,14 +16,17 @@ differs from its manifest's) is a miss and is removed, never an error and never 
 from __future__ import annotations
 
 import contextlib
+import json
 import mmap
 import os
 import secrets
 import tempfile
 import threading
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -34,11 +37,15 @@ from assembler.cache.entry import MANIFEST_SUFFIX, MODEL_SUFFIX, XML_SUFFIX, Ent
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.folder import GRACE_SECONDS, MODEL_FILE
 from assembler.cache.folder import evict as evict_folder
+from assembler.cache.key import FORMAT
 from assembler.files.inputs import note_inputs
 from assembler.files.regular import open_regular, read_regular
 from assembler.mjcf import installed_mujoco
 
 TEMP_SUFFIX = ".tmp"
+
+PATCH_SUFFIX = ".patch"
+"""A patch kept in place of a model (:meth:`ModelStore.save_patch`)."""
 
 
 _writers: list[threading.Thread] = []
@@ -308,6 +315,36 @@ class ModelStore:
             self._remove(previous.xml)
         self.evict()
 
+    # ----- patches ------------------------------------------------------------------------
+
+    def save_patch(self, key: str, source: str, patch: Mapping[str, Any]) -> None:
+        """Keep under ``key``, in place of a model file, how its model is made from the entry
+        ``source``'s without a compile (a patched variant, :mod:`assembler.patch.derived`): a few
+        hundred bytes of JSON where a model file holds megabytes of meshes. Nothing of it needs
+        checking but the source entry, whose files are checked when it is loaded. A cache that
+        cannot be written only means the patch is worked out again next time."""
+        text = json.dumps({"format": FORMAT, "key": key, "source": source, "patch": patch}, allow_nan=False)
+        with contextlib.suppress(OSError):
+            self._write(key + PATCH_SUFFIX, text.encode("utf-8"))
+
+    def load_patch(self, key: str) -> tuple[str, Mapping[str, Any]] | None:
+        """The source entry and the patch kept under ``key`` (see :meth:`save_patch`), or None; a
+        file that is not a whole patch of this format is removed."""
+        name = key + PATCH_SUFFIX
+        try:
+            data = json.loads(read_regular(self.directory / name).decode("utf-8"))
+        except (OSError, UnicodeDecodeError):
+            return None
+        except ValueError:
+            data = None
+        whole = isinstance(data, dict) and data.get("format") == FORMAT and data.get("key") == key
+        if not whole or not isinstance(data.get("source"), str) or not isinstance(data.get("patch"), dict):
+            self._remove(name)
+            return None
+        with contextlib.suppress(OSError):
+            self._touch(name)
+        return data["source"], data["patch"]
+
     # ----- housekeeping -------------------------------------------------------------------
 
     def _remove(self, *names: str) -> None:
@@ -334,7 +371,7 @@ class ModelStore:
                 if item.name.endswith(MANIFEST_SUFFIX):
                     entry = self._read_entry(item.name.removesuffix(MANIFEST_SUFFIX))
                     referenced.update((entry.model, entry.xml) if entry is not None else ())
-                else:
+                elif not item.name.endswith(PATCH_SUFFIX):  # a patch stands alone: never an orphan
                     others.append((item.name, item.stat().st_mtime))
         for name, mtime in others:
             if name not in referenced and now - mtime > GRACE_SECONDS:

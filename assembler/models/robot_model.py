@@ -243,18 +243,19 @@ class RobotModel(PlacedPart):
         if self._mjspec is not None:
             return compile_home(self._mjspec, self.assembly_home(), self.describe(), meshes=cache)
         self.entry_key = key = entry_key(self.build_inputs(), cache)
-        patched = self._patched if key is not None else None
+        patched = partial(self._patched, store) if key is not None else None
         compiled = compile_model(key, self._assembly, cache=cache, store=store, patched=patched)
         self._keyframe = compiled.keyframe
         return compiled.model
 
-    def _patched(self) -> CompiledModel | None:
+    def _patched(self, store: bool) -> CompiledModel | None:
         """On a cache miss: this robot patched from the cached model of the robot without its
-        overrides (not stored), or None to compile: the patcher the package root wired into the compiler
+        overrides (the model not stored; the patch kept unless ``store`` is False), or None to
+        compile: the patcher the package root wired into the compiler
         (:data:`assembler.compiler.variant_patcher`), which reads the model classes."""
         if compiler.variant_patcher is None:
             return None
-        answer: CompiledModel | None = compiler.variant_patcher().patched_variant(self)
+        answer: CompiledModel | None = compiler.variant_patcher().patched_variant(self, store)
         return answer
 
     def _patched_xml(self, cache: bool, store: bool) -> tuple[CompiledModel, str] | None:

@@ -1,23 +1,72 @@
-"""The constants MuJoCo derives from the fields a patch writes, recomputed as its compiler does.
+"""A patch of a compiled model: the entries it writes, the constants MuJoCo derives from them
+(recomputed as its compiler does), and the patch kept in the cache in place of the model it makes.
 
 ``mj_setConst`` recomputes most (subtree masses, inverse weights, ``actuator_acc0``, ...). What it
 leaves is done here: a position actuator's ``dampratio`` (the compiler turns it into ``biasprm[2]``
 once, from the inertia at qpos0; MuJoCo 3.9 and 4.0 use different inertias, so the rule is read off
 the compiled robot), the home keyframe's controls, and the statistics the solvers read.
+
+A variant's model made by a patch is not stored (see :mod:`assembler.patch.robot_variant`), but its
+patch is (:func:`keep_patch`): a new process then answers the same request from the plain robot's
+entry and the patch (:func:`kept_model`), with no spec read and no schema imported. This module
+imports neither, so that answer stays light.
 """
 
 from __future__ import annotations
 
-import copy
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
 
 import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.compiler.stored import default_store, load_entry
 from assembler.mjcf.keyframe import home_control
-from assembler.models import RobotModel
-from assembler.patch.patchable import ModelPatch, model_patch
-from assembler.patch.resolved import Resolved
+
+
+@dataclass
+class ModelPatch:
+    """Entries to write into a compiled model: ``field[row] = value``, then derived constants."""
+
+    entries: list[tuple[str, int, Any]] = field(default_factory=list)
+    dampratio: dict[int, float] = field(default_factory=dict)
+    """Actuator -> damping ratio: its ``biasprm[2]`` is recomputed after ``mj_setConst``."""
+
+    dampratio_rule: str | None = None
+    """How this MuJoCo's compiler resolves a dampratio (``assembler.patch.derived.dampratio_rule``);
+    None: read off the model the patch is applied to, before it is patched."""
+
+    def set(self, name: str, row: int, value: Any) -> None:
+        """Write ``value`` into row ``row`` of the model field ``name``."""
+        self.entries.append((name, row, value))
+
+    @property
+    def fields(self) -> list[str]:
+        """The model fields this patch writes (before derived constants), each once."""
+        return sorted({name for name, _, _ in self.entries})
+
+    def to_data(self) -> dict[str, Any]:
+        """The patch as JSON data (floats written in full: :meth:`from_data` gives the same values)."""
+        return {
+            "entries": [[name, row, np.asarray(value).tolist()] for name, row, value in self.entries],
+            "dampratio": [[row, ratio] for row, ratio in self.dampratio.items()],
+            "dampratio_rule": self.dampratio_rule,
+        }
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, Any]) -> ModelPatch:
+        """The patch :meth:`to_data` wrote; ValueError for anything else."""
+        try:
+            entries = [(str(name), int(row), np.asarray(value)) for name, row, value in data["entries"]]
+            dampratio = {int(row): float(ratio) for row, ratio in data["dampratio"]}
+            rule = data["dampratio_rule"]
+        except (KeyError, TypeError, ValueError) as error:
+            raise ValueError(f"not a patch: {error}") from None
+        if rule not in ("diagonal", "inverse"):
+            raise ValueError(f"not a patch: dampratio rule {rule!r}")
+        return cls(entries, dampratio, rule)
 
 
 def _reflected_inertias(
@@ -92,9 +141,28 @@ def apply_patch(model: mujoco.MjModel, patch: ModelPatch, data: mujoco.MjData | 
         model.key_ctrl[home] = home_control(model, model.key_qpos[home])
 
 
-def patched_model(model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> mujoco.MjModel:
-    """A copy of ``model`` (the compiled ``base``) patched into the compiled ``variant``."""
-    patch = model_patch(model, Resolved.of(base), Resolved.of(variant))
-    patched = copy.copy(model)  # MuJoCo's mj_copyModel: its own arrays
-    apply_patch(patched, patch)
-    return patched
+def keep_patch(key: str, source: str, patch: ModelPatch) -> None:
+    """Keep ``patch`` in the cache as the way to make the entry ``key`` from the entry ``source``
+    (its dampratio rule settled first: :func:`kept_model` may meet another source model)."""
+    default_store().save_patch(key, source, patch.to_data())
+
+
+def kept_model(key: str) -> mujoco.MjModel | None:
+    """The model of the entry ``key`` made from a kept patch (see :func:`keep_patch`): its source
+    entry, loaded as every entry is (its files checked), and patched; None when either is missing."""
+    kept = default_store().load_patch(key)
+    if kept is None:
+        return None
+    source, data = kept
+    try:
+        patch = ModelPatch.from_data(data)
+    except ValueError:
+        return None
+    model = load_entry(source, counted=False)
+    if model is None:
+        return None
+    try:
+        apply_patch(model, patch)
+    except (AttributeError, IndexError, ValueError):  # a patch that does not fit the model: a miss
+        return None
+    return model

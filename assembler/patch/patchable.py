@@ -11,7 +11,7 @@ Anything else (counts, types, names, meshes, added or removed elements) is struc
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import copy
 from typing import Any
 
 import mujoco
@@ -19,7 +19,9 @@ import numpy as np
 
 from assembler.errors import AssemblerError
 from assembler.mjcf.census import scaled_size
+from assembler.models import RobotModel
 from assembler.models.physical import ZONE_SENSORS
+from assembler.patch.derived import ModelPatch, apply_patch
 from assembler.patch.resolved import Resolved
 
 PATCHABLE: dict[str, tuple[str, ...]] = {
@@ -140,28 +142,6 @@ def _zone_sites(model: mujoco.MjModel) -> set[int]:
 
 class NotPatchable(AssemblerError):
     """A variant changes something a compiled model cannot take: it must be compiled."""
-
-
-@dataclass
-class ModelPatch:
-    """Entries to write into a compiled model: ``field[row] = value``, then derived constants."""
-
-    entries: list[tuple[str, int, Any]] = field(default_factory=list)
-    dampratio: dict[int, float] = field(default_factory=dict)
-    """Actuator -> damping ratio: its ``biasprm[2]`` is recomputed after ``mj_setConst``."""
-
-    dampratio_rule: str | None = None
-    """How this MuJoCo's compiler resolves a dampratio (``assembler.patch.derived.dampratio_rule``);
-    None: read off the model the patch is applied to, before it is patched."""
-
-    def set(self, name: str, row: int, value: Any) -> None:
-        """Write ``value`` into row ``row`` of the model field ``name``."""
-        self.entries.append((name, row, value))
-
-    @property
-    def fields(self) -> list[str]:
-        """The model fields this patch writes (before derived constants), each once."""
-        return sorted({name for name, _, _ in self.entries})
 
 
 def _structure_problem(base: Resolved, variant: Resolved) -> str | None:
@@ -301,3 +281,11 @@ def model_patch(model: mujoco.MjModel, base: Resolved, variant: Resolved) -> Mod
     _body_entries(patch, model, base, variant)
     _home_entries(patch, model, base, variant)
     return patch
+
+
+def patched_model(model: mujoco.MjModel, base: RobotModel, variant: RobotModel) -> mujoco.MjModel:
+    """A copy of ``model`` (the compiled ``base``) patched into the compiled ``variant``."""
+    patch = model_patch(model, Resolved.of(base), Resolved.of(variant))
+    patched = copy.copy(model)  # MuJoCo's mj_copyModel: its own arrays
+    apply_patch(patched, patch)
+    return patched

@@ -21,14 +21,18 @@ the plain robot not in the cache) is compiled as before; the reason is logged at
 ``assembler.patch.robot_variant`` logger, never warned: a compile is the normal answer, not a problem.
 
 A model patched for ``get_model()`` is not stored as a cache entry of its own, whatever ``store``
-says: patching it again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU
-against ~0.1 s for the load, measured under load), while storing it costs more than the patch
-(serialising a Panda's 44 MB model, mostly its meshes, took 0.17 s of CPU, plus the write) and each
-such entry would push the plain robot's entry, the one every variant needs, out of the bounded
-cache. A variant asked for again is patched again from the plain robot's entry, which each use keeps
-recent. A patched XML is stored, with its model, unless ``store`` is False: it is written to a file,
-and stored, the same request is answered from the cache next time with no spec read, as a compiled
-one is (the entry records the plain robot's files, which it was made from).
+says (its patch is, a few hundred bytes: :func:`~assembler.patch.derived.keep_patch`): patching it
+again costs about what loading a stored entry would (a Panda: ~0.2 s of CPU against ~0.1 s for the
+load, measured under load), while storing it costs more than the patch (serialising a Panda's 44 MB
+model, mostly its meshes, took 0.17 s of CPU, plus the write) and each such entry would push the
+plain robot's entry, the one every variant needs, out of the bounded cache. A variant asked for
+again is patched again from the plain robot's entry, which each use keeps recent, by its kept
+patch: in a new process, ``assemble(...).get_model()`` of it is then answered from its request
+record without reading a spec or importing the schema (:mod:`assembler.answers.deferred`).
+
+A patched XML is stored, with its model, unless ``store`` is False: it is written to a file, and
+stored, the same request is answered from the cache next time with no spec read, as a compiled one
+is (the entry records the plain robot's files, which it was made from).
 """
 
 from __future__ import annotations
@@ -44,8 +48,8 @@ from assembler.compiler.stored import default_store, entry_key, load_entry
 from assembler.mjcf.emit import XmlText
 from assembler.mjcf.keyframe import Keyframe
 from assembler.models import RobotModel
-from assembler.patch.derived import apply_patch
-from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.derived import ModelPatch, apply_patch, dampratio_rule, keep_patch, kept_model
+from assembler.patch.patchable import NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_spec
 from assembler.patch.xml_edits import patched_text
 from assembler.registry.catalog import applied_overrides
@@ -143,15 +147,25 @@ def _plain_model_and_xml(
     return plain.get_model(cache=True, store=store), xml
 
 
-def patched_variant(robot: RobotModel) -> CompiledModel | None:
-    """``robot``'s model patched from the cached model of its plain robot (see the module); None,
-    with the reason logged, when it must be compiled."""
+def patched_variant(robot: RobotModel, store: bool = True) -> CompiledModel | None:
+    """``robot``'s model patched from the cached model of its plain robot (see the module), by the
+    patch kept for its entry, else by one worked out now (and kept unless ``store`` is False);
+    None, with the reason logged, when it must be compiled."""
+    key = robot.entry_key  # get_model's key for this robot, set before it asks
+    kept = kept_model(key) if key is not None else None
+    if kept is not None:
+        LOG.debug("%s patched from its plain robot's cached model by its kept patch", robot.name)
+        return CompiledModel(kept, Keyframe.of(kept))
     found = _plain_patch(robot)
     if found is None:
         return None
-    model, patch, _, _ = found
+    model, patch, _, plain_key = found
+    rule = patch.dampratio_rule or dampratio_rule(model, patch.dampratio)  # read off the plain model
+    patch = replace(patch, dampratio_rule=rule)
     apply_patch(model, patch)  # load_entry's model is this caller's own (a copy when kept in memory)
     LOG.debug("%s patched from its plain robot's cached model: %s", robot.name, ", ".join(patch.fields))
+    if store and key is not None and plain_key is not None:
+        keep_patch(key, plain_key, patch)
     return CompiledModel(model, Keyframe.of(model))
 
 

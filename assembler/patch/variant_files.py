@@ -30,8 +30,8 @@ from assembler.compiler.compile import compile_and_emit
 from assembler.compiler.service import default_store, entry_key
 from assembler.mjcf.emit import XmlText
 from assembler.models import RobotModel
-from assembler.patch.derived import apply_patch
-from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.derived import ModelPatch, apply_patch
+from assembler.patch.patchable import NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.patch.xml_edits import patched_text
 from assembler.registry.instances import assemble

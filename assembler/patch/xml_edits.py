@@ -20,7 +20,7 @@ import numpy as np
 
 from assembler.mjcf.emit import NotInText, XmlText, numbers
 from assembler.mjcf.keyframe import HOME_KEY, home_control
-from assembler.patch.patchable import ModelPatch
+from assembler.patch.derived import ModelPatch
 
 JOINT_ATTRIBUTES = {
     "dof_damping": "damping",

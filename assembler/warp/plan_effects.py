@@ -30,8 +30,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.models import RobotModel
-from assembler.patch.derived import dampratio_rule
-from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.derived import ModelPatch, dampratio_rule
+from assembler.patch.patchable import NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import Override, parse_overrides, parse_path
 from assembler.worlds.variants.plan import VariantPlan

@@ -21,8 +21,8 @@ from numpy.typing import NDArray
 
 from assembler.errors import AssemblerError
 from assembler.models import RobotModel
-from assembler.patch.derived import apply_patch, dampratio_rule
-from assembler.patch.patchable import ModelPatch, NotPatchable, model_patch
+from assembler.patch.derived import ModelPatch, apply_patch, dampratio_rule
+from assembler.patch.patchable import NotPatchable, model_patch
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import Override
 

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 import assembler
@@ -79,6 +80,26 @@ print(json.dumps({{
 }}))
 """
 
+PATCHED = f"""\
+import json, sys
+import assembler
+assembler.assemble("Sparrow7").get_model()  # the plain robot: cached by the first process
+overrides = {{"joint_defaults.armature": 0.2, "joint_defaults.frictionloss": 0.07}}
+robot = assembler.assemble("Sparrow7", overrides=overrides)
+deferred = type(robot).__name__
+model = robot.get_model()
+heavy = [name for name in {HEAVY} if name in sys.modules]
+compiled = robot.get_model(cache=False)  # made now, with the schema: the full compile
+fields = ("dof_armature", "dof_frictionloss", "actuator_biasprm", "dof_invweight0", "key_ctrl")
+print(json.dumps({{
+    "deferred": deferred,
+    "heavy": heavy,
+    "values": {{name: getattr(model, name).tolist() for name in fields}},
+    "compiled": {{name: getattr(compiled, name).tolist() for name in fields}},
+}}))
+"""
+"""A variant patched from its plain robot's cached model (never stored as a model of its own)."""
+
 
 def _run(script: str, *arguments: str, cache: Path) -> dict[str, Any]:
     environment = {**os.environ, "PYTHONPATH": str(REPOSITORY), "ASSEMBLER_CACHE_DIR": str(cache)}
@@ -123,3 +144,16 @@ def test_an_unknown_robot_is_an_error_when_assembled() -> None:
         assembler.assemble("Sparow7")
     with pytest.raises(RegistryError, match="unknown robot 'Sparow7'"):
         assembler.create_robot("Sparow7")
+
+
+def test_a_patched_variant_asked_for_before_is_answered_without_the_schema(tmp_path: Path) -> None:
+    first = _run(PATCHED, cache=tmp_path / "cache")
+    assert list((tmp_path / "cache").glob("*.patch"))  # its patch kept in place of a model
+    second = _run(PATCHED, cache=tmp_path / "cache")
+    assert first["heavy"] and first["deferred"] == "Sparrow7"
+    assert second["heavy"] == [] and second["deferred"] == "DeferredRobot"
+    for seen in (first, second):
+        for name, values in seen["compiled"].items():
+            assert np.allclose(seen["values"][name], values, rtol=1e-10, atol=1e-10), name
+    assert second["values"] == first["values"]
+    assert second["values"]["dof_frictionloss"][0] == pytest.approx(0.07)

@@ -13,8 +13,8 @@ import pytest
 
 import assembler
 from assembler.errors import SpecError
-from assembler.patch.derived import apply_patch, patched_model
-from assembler.patch.patchable import PATCHABLE, NotPatchable, model_patch
+from assembler.patch.derived import apply_patch
+from assembler.patch.patchable import PATCHABLE, NotPatchable, model_patch, patched_model
 from assembler.patch.resolved import Resolved, resolve_variant
 from assembler.spec.documents import parse_overrides
 from tests.conftest import TWO_LINK_MJCF
