@@ -176,6 +176,11 @@ def patched_variant_xml(
     patched, the text the plain robot's emitted XML with the patch's values written in
     (:mod:`assembler.patch.xml_edits`); None, with the reason logged, when it must be compiled
     (the patch writes what no attribute holds alone: ``bodies:`` scales)."""
+    if any(override.path[:1] == ("bodies",) for override in applied_overrides(type(robot))):
+        # A body's mass, inertia and sizes are held by no attribute alone: compiled, with no
+        # compile of the plain robot first for a text that could not be edited anyway.
+        LOG.debug("%s compiled for its XML: not writable as attribute edits (bodies:)", robot.name)
+        return None
     found = _plain_patch(robot, with_xml=True, cache=cache, store=store)
     if found is None:
         return None

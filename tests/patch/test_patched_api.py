@@ -149,6 +149,16 @@ def test_the_xml_of_a_variant_with_a_body_scale_is_compiled(caplog: pytest.LogCa
     assert "Sparrow70 compiled for its XML: not writable as attribute edits" in caplog.text
 
 
+def test_the_xml_of_a_body_scaled_variant_of_a_robot_not_cached_is_one_compile(private_cache: Path) -> None:
+    overrides = {"bodies": [{"match": "link3", "mass_scale": 1.4}]}
+    xml = assembler.assemble("Sparrow7", overrides=overrides).get_xml()
+    wait_for_writes()
+    assert len(list(private_cache.glob("*.json"))) == 1  # the variant's entry: no plain robot compiled first
+    scaled = mujoco.MjModel.from_xml_string(xml).body("robot0_link3").mass[0]
+    plain = assembler.assemble("Sparrow7").get_model()
+    assert scaled == pytest.approx(1.4 * plain.body("robot0_link3").mass[0])
+
+
 def test_a_saved_variant_of_a_cached_robot_is_written_without_a_compile_and_loads(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
