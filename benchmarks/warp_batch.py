@@ -6,7 +6,7 @@ extra; the Panda needs robosuite's model files). Per robot: one compile of the r
 values times N/4 seeded draws of a link's mass factor and a joint's armature) and its ratio to the
 compile against the target (20 compiles' time); the CPU part of it (the plan validated and probed
 once, every world's values in arrays: ``laws`` yes, or each world patched: no) and the rest
-(``put_model``, ``put_data``, ``set_const``, ``forward`` on the device). Peak memory: what Python
+(``put_model``, ``make_data``, ``set_const``, ``forward`` on the device). Peak memory: what Python
 and numpy allocate during ``put_variants`` (tracemalloc, a run of its own) and the process's peak
 resident size. Warp's kernels are compiled by a small batch first, so the figures are warm.
 """

@@ -261,17 +261,37 @@ def put_variants(plan: VariantPlan, nconmax: int | None = None, njmax: int | Non
     warp_model = mujoco_warp.put_model(model, batch_sizes={name: nworld for name in varied})
     for name in written:  # uploaded and written on the device: nothing of the model is read back
         write_rows(getattr(warp_model, name), indices, rows.values[name])
-    home = mujoco.MjData(model)
-    if model.nkey:
-        mujoco.mj_resetDataKeyframe(model, home, mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY))
-    mujoco.mj_forward(model, home)
-    warp_data = mujoco_warp.put_data(model, home, nworld=nworld, nconmax=nconmax, njmax=njmax)
+    warp_data = home_data(model, nworld, nconmax, njmax)
     _derive(warp_model, warp_data, effects, model, written, restore=False)
     warp_data.qpos.assign(rows.qpos.astype(np.float32))
     warp_data.ctrl.assign(rows.ctrl.astype(np.float32))
     mujoco_warp.forward(warp_model, warp_data)
     seeds = np.full(nworld, plan.seed, dtype=np.int64)
     return WarpBatch(warp_model, warp_data, plan, varied, model, robot, effects, nominal, seeds)
+
+
+def home_data(model: mujoco.MjModel, nworld: int, nconmax: int | None, njmax: int | None) -> Any:
+    """``nworld`` worlds of ``model`` in its home keyframe's state (each world's qpos and ctrl are
+    written next), made on the device: ``put_data`` of a host ``MjData`` tiles every array, the
+    constraint buffers too, once per world (0.19-0.29 s for 4,096 Sparrow7 worlds on CPU, against
+    0.02-0.12 s). The buffers are sized as ``put_data`` sizes them: MuJoCo Warp's guess, raised to
+    the home pose's own contacts and constraints."""
+    home = mujoco.MjData(model)
+    if model.nkey:
+        mujoco.mj_resetDataKeyframe(model, home, mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, HOME_KEY))
+    mujoco.mj_forward(model, home)
+    data = mujoco_warp.make_data(model, nworld=nworld, nconmax=nconmax, njmax=njmax)
+    if nconmax is None and data.naconmax < home.ncon * nworld or njmax is None and data.njmax < home.nefc:
+        nconmax = max(home.ncon, data.naconmax // nworld) if nconmax is None else nconmax
+        njmax = max(home.nefc, data.njmax) if njmax is None else njmax
+        data = mujoco_warp.make_data(model, nworld=nworld, nconmax=nconmax, njmax=njmax)
+    for name in ("qvel", "act", "mocap_pos", "mocap_quat"):  # make_data starts at rest at qpos0
+        value = getattr(home, name)
+        if value.size and value.any():
+            getattr(data, name).assign(np.repeat(value[None], nworld, axis=0).astype(np.float32))
+    if home.time:
+        data.time.assign(np.full(nworld, home.time, dtype=np.float32))
+    return data
 
 
 def _varies(values: NDArray[np.float64], model: mujoco.MjModel, name: str) -> bool:
