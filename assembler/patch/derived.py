@@ -142,8 +142,9 @@ def apply_patch(model: mujoco.MjModel, patch: ModelPatch, data: mujoco.MjData | 
 
 
 def keep_patch(key: str, source: str, patch: ModelPatch) -> None:
-    """Keep ``patch`` in the cache as the way to make the entry ``key`` from the entry ``source``
-    (its dampratio rule settled first: :func:`kept_model` may meet another source model)."""
+    """Keep ``patch`` in the cache as the way to make the entry ``key`` from the entry ``source``.
+    Its dampratio rule must be settled (read off the source model by the caller): a kept patch with
+    none is refused when read, so that using it never costs a probe of the source model."""
     default_store().save_patch(key, source, patch.to_data())
 
 
