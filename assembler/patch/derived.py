@@ -160,10 +160,10 @@ def kept_model(key: str) -> mujoco.MjModel | None:
     except ValueError:
         return None
     model = load_entry(source, counted=False)
-    if model is None:
-        return None
+    if model is None or not all(isinstance(getattr(model, name, None), np.ndarray) for name in patch.fields):
+        return None  # an entry or a field gone (a file edited by hand): a miss, compiled again
     try:
         apply_patch(model, patch)
-    except (AttributeError, IndexError, ValueError):  # a patch that does not fit the model: a miss
+    except (IndexError, TypeError, ValueError):  # values that do not fit the model: a miss
         return None
     return model

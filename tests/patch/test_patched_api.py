@@ -236,6 +236,31 @@ def test_a_patched_variant_is_not_stored_and_asked_again_is_patched_again(
     assert again.joint("robot0_joint2").frictionloss[0] == pytest.approx(0.07)
 
 
+TAMPERED = {
+    "cut short": lambda text: text[: len(text) // 2],
+    "not a model field": lambda text: text.replace('"dof_frictionloss"', '"__class__"'),
+    "a value of another shape": lambda text: text.replace("0.07]", "[0.07, 0.07, 0.07]]"),
+    "another source": lambda text: text.replace('"source": "', '"source": "0'),
+}
+
+
+@pytest.mark.parametrize("tamper", TAMPERED)
+def test_a_kept_patch_that_is_not_whole_is_a_miss_and_the_variant_patched_again(
+    private_cache: Path, tamper: str
+) -> None:
+    overrides = {"joint_defaults.frictionloss": 0.07}
+    assembler.assemble("Sparrow7").get_model()
+    wait_for_writes()
+    first = assembler.assemble("Sparrow7", overrides=overrides).get_model()
+    [kept] = private_cache.glob("*.patch")
+    text = kept.read_text()
+    kept.write_text(TAMPERED[tamper](text))
+    assert kept.read_text() != text
+    again = assembler.assemble("Sparrow7", overrides=overrides).get_model()
+    assert _differences(again, first) == []
+    assert kept.read_text() == text  # worked out again and kept again
+
+
 def test_a_structural_override_is_compiled_and_the_reason_is_logged(
     caplog: pytest.LogCaptureFixture,
 ) -> None:
