@@ -27,6 +27,14 @@ from assembler.errors import SpecError
 from assembler.files.paths import confine, spec_homes
 from assembler.models import REGISTERED_BASES, ManipulatorModel
 from assembler.robosuite.conventions import CONTROLLER, DRIVEN_GROUPS, base_in_robosuite, robot_type_name
+from assembler.robosuite.make_records import (
+    Facts,
+    Origins,
+    origins_of,
+    recorded_facts,
+    spec_class_of,
+    spec_file,
+)
 
 ROBOSUITE_CONFIGS = Path(robosuite.__file__).parent / "controllers" / "config"
 """robosuite's configuration folder: ``robots/default_<robot>.json`` and ``default/composite/<type>.json``."""
@@ -88,8 +96,11 @@ def robosuite_config_names() -> list[str]:
     return composites + robots
 
 
-def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | None:
-    """The configuration the spec's ``robosuite.controller`` gives, flattened; None when it gives none."""
+def declared_config(
+    robot_class: type[ManipulatorModel], read: Origins | None = None
+) -> dict[str, Any] | None:
+    """The configuration the spec's ``robosuite.controller`` gives, flattened; None when it gives none.
+    A JSON file it names goes into ``read`` with its (size, mtime_ns) before it is read."""
     declared = robot_class.spec.robosuite.controller
     if declared is None:
         return None
@@ -110,6 +121,9 @@ def declared_config(robot_class: type[ManipulatorModel]) -> dict[str, Any] | Non
         except SpecError as error:
             raise SpecError(robot_class.spec_problem(CONTROLLER, str(error))) from None
         try:
+            if read is not None:
+                state = path.stat()
+                read[str(path)] = (state.st_size, state.st_mtime_ns)
             return flattened(json.loads(path.read_text()))
         except OSError as error:
             raise SpecError(
@@ -177,15 +191,45 @@ class ControllerConfigs:
     def load(self, controller: str | None = None, robot: str | None = None) -> dict[str, Any]:
         """robosuite's ``load_composite_controller_config``, answering for spec robots."""
         registered = self.robots.get(robot) if controller is None and robot is not None else None
-        if registered is None:
+        if registered is None or robot is None:
             return ROBOSUITES_LOADER(controller=controller, robot=robot)
-        robot_class: type[ManipulatorModel] = registered.assembler_class  # type: ignore[attr-defined]
-        declared = declared_config(robot_class)
+        name = robot
+        file = spec_file(registered)
+        if file is not None:  # the configuration from its make record
+            material: dict[str, Any] = {
+                "family": "robot",
+                "name": name,
+                "file": file,
+                "idn": "",
+                "added": [],
+                "controller": 1,
+            }
+            config = recorded_facts(material, lambda: self._recordable(registered, name))["config"]
+            return copy.deepcopy(config) if config is not None else ROBOSUITES_LOADER(robot=name)
+        config = self._config(registered.assembler_class, name)  # type: ignore[attr-defined]
+        return config if config is not None else ROBOSUITES_LOADER(controller=None, robot=name)
+
+    def _config(
+        self, robot_class: type[ManipulatorModel], robot: str, read: Origins | None = None
+    ) -> dict[str, Any] | None:
+        """The configuration of a spec robot; None for robosuite's own (one of robosuite's names
+        whose spec declares none). A JSON file it is read from goes into ``read``."""
+        declared = declared_config(robot_class, read)
         if declared is not None:
             return declared
         if robot in self.robosuites_own:
-            return ROBOSUITES_LOADER(controller=None, robot=robot)
+            return None
         return default_config(robot_class)
+
+    def _recordable(self, registered: type, robot: str) -> tuple[Facts, Origins]:
+        """The configuration (:meth:`_config`) as a make record's values, with the files it depends on:
+        the robot's and its base's specs and MJCF (a default configuration covers the base's
+        actuators), and a JSON file it is read from."""
+        robot_class: type[ManipulatorModel] = spec_class_of(registered)
+        read: Origins = {}
+        config = self._config(robot_class, robot, read)
+        base = REGISTERED_BASES.lookup(base_in_robosuite(robot_class.spec))
+        return {"config": config}, {**origins_of([robot_class(idn=0), base(idn=0)]), **read}
 
     def install(self) -> None:
         """Bind the wrapper where robosuite's modules hold the loader (code that imported it earlier keeps

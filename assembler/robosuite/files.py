@@ -45,18 +45,10 @@ def written_file(text: str) -> str:
     return str(text_file(content_folder(PARTS), text, ".xml"))
 
 
-def kept_file(
-    inputs: object,
-    read: Iterable[str],
-    emit: Callable[[], str],
-    read_earlier: Callable[[], Mapping[str, tuple[int, int]]] | None = None,
-) -> str:
-    """The part file of ``inputs`` (a part's or an assembly's build inputs, plain frozen data), kept
-    across processes: found by a key of the inputs (and their kind), the assembler's code, MuJoCo's
-    version and the resolution environment, and served without ``emit()`` while the files in
-    ``read`` (its MJCF, includes and assets) are unchanged and the file is whole. ``read`` and
-    ``read_earlier`` are used only when the text is made (see
-    :func:`~assembler.cache.content.recorded_text_file`)."""
+def file_key(inputs: object) -> str:
+    """The key a part file of ``inputs`` (a part's or an assembly's build inputs, plain frozen data)
+    is kept under: a digest of the inputs (and their kind), the assembler's code, MuJoCo's version
+    and the resolution environment."""
     material = {
         "format": FORMAT,
         "assembler": code_fingerprint(),
@@ -65,8 +57,50 @@ def kept_file(
         "kind": type(inputs).__qualname__,
         "inputs": dataclasses.asdict(inputs) if dataclasses.is_dataclass(inputs) else repr(inputs),  # type: ignore[arg-type]
     }
-    key = buffer_digest(json.dumps(material, sort_keys=True, default=repr).encode())
-    return str(recorded_text_file(content_folder(PARTS), key, read, emit, ".xml", read_earlier))
+    return buffer_digest(json.dumps(material, sort_keys=True, default=repr).encode())
+
+
+def kept_file(
+    inputs: object,
+    read: Iterable[str],
+    emit: Callable[[], str],
+    read_earlier: Callable[[], Mapping[str, tuple[int, int]]] | None = None,
+) -> str:
+    """The part file of ``inputs``, kept across processes under :func:`file_key` and served without
+    ``emit()`` while the files in ``read`` (its MJCF, includes and assets) are unchanged and the file
+    is whole. ``read`` and ``read_earlier`` are used only when the text is made (see
+    :func:`~assembler.cache.content.recorded_text_file`)."""
+    return str(recorded_text_file(content_folder(PARTS), file_key(inputs), read, emit, ".xml", read_earlier))
+
+
+def recorded_file(
+    key: str, parts: Callable[[], list[PartModel]], build: Callable[[list[PartModel]], mujoco.MjSpec]
+) -> str:
+    """The part file kept under ``key`` (the :func:`file_key` of ``parts()``' inputs, from a make
+    record), its notes said: served while its record is current, without ``parts()`` (which makes
+    the parts: reads their specs); else made of them as :func:`robosuite_file` makes it."""
+    made: list[list[PartModel]] = []
+
+    def got() -> list[PartModel]:
+        if not made:
+            made.append(parts())
+        return made[0]
+
+    def read() -> Iterator[str]:  # iterated only on a miss
+        yield from _files_read(got())
+
+    path = str(
+        recorded_text_file(
+            content_folder(PARTS),
+            key,
+            read(),
+            lambda: _emitted(lambda: build(got())),
+            ".xml",
+            lambda: _read_earlier(got()),
+        )
+    )
+    say_notes(path)
+    return path
 
 
 def robosuite_file(
@@ -77,29 +111,37 @@ def robosuite_file(
     time); its notes said."""
 
     def emit() -> str:
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
-            text = lossless_xml(build())
-        notes = []
-        for warning in caught:
-            if issubclass(warning.category, AssemblerWarning):
-                notes.append(
-                    {"message": str(warning.message), "file": warning.filename, "line": warning.lineno}
-                )
-            else:  # not ours to carry: said here only
-                warnings.warn_explicit(warning.message, warning.category, warning.filename, warning.lineno)
-        return "".join(f"{NOTE}{escape(json.dumps(note), _DASH)} -->\n" for note in notes) + text
+        return _emitted(build)
 
     if kept:
         path = kept_file(inputs, _files_read(parts), emit, lambda: _read_earlier(parts))
     else:
         path = written_file(emit())
+    say_notes(path)
+    return path
+
+
+def _emitted(build: Callable[[], mujoco.MjSpec]) -> str:
+    """The lossless text of ``build()``, with what building and emitting it warned as leading notes."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        text = lossless_xml(build())
+    notes = []
+    for warning in caught:
+        if issubclass(warning.category, AssemblerWarning):
+            notes.append({"message": str(warning.message), "file": warning.filename, "line": warning.lineno})
+        else:  # not ours to carry: said here only
+            warnings.warn_explicit(warning.message, warning.category, warning.filename, warning.lineno)
+    return "".join(f"{NOTE}{escape(json.dumps(note), _DASH)} -->\n" for note in notes) + text
+
+
+def say_notes(path: str) -> None:
+    """Say the notes a part file carries (what its emission warned), each once per process."""
     for note in _notes_of(path):
         said = (note["message"], note["file"], note["line"])
         if said not in _SAID:
             _SAID.add(said)
             warnings.warn_explicit(*said[:1], AssemblerWarning, *said[1:])
-    return path
 
 
 def _files_read(parts: list[PartModel]) -> Iterator[str]:

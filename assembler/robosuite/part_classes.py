@@ -10,7 +10,9 @@ The semantics robosuite asks of a gripper come from its spec: ``dof`` and ``form
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import dataclasses
+import inspect
+from collections.abc import Callable, Sequence
 from typing import Any, ClassVar
 
 import numpy as np
@@ -19,8 +21,18 @@ from robosuite.models.grippers import GripperModel as RobosuiteGripper
 
 from assembler.errors import SpecError
 from assembler.models import GripperModel, PartModel, RobotBaseModel
+from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray
-from assembler.robosuite.parts import part_file, robosuite_part
+from assembler.robosuite.files import file_key
+from assembler.robosuite.make_records import (
+    Facts,
+    Origins,
+    origins_of,
+    recorded_facts,
+    spec_class_of,
+    spec_file,
+)
+from assembler.robosuite.parts import part_file, recorded_part_file, robosuite_part
 from assembler.spec.fieldpath import FieldPath
 
 BASE_CLASSES: dict[str, type] = {
@@ -50,38 +62,90 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
     """The gripper's last outputs (robosuite's state, zeroed at each reset)."""
 
     def __init__(self, idn: int | str = 0) -> None:
-        assert self.assembler_class is not None, "made per spec by robosuite_class_of"
-        self.part: GripperModel = robosuite_part(self.assembler_class, idn)
-        """Our gripper: its spec, actions and state."""
-        if self.part.action_map is None and self.part.actuators:
-            actuators = ", ".join(name[len(self.part.naming_prefix) :] for name in self.part.actuators)
-            message = (
-                f"the gripper has actuators ({actuators}) but no 'actions:' saying how a policy's "
-                "actions drive "
-                "them; robosuite needs one (see docs/robosuite.md, Gripper actions)"
-            )
-            raise SpecError(self.part.spec_problem(ACTIONS, message))
+        assert inspect.getattr_static(type(self), "assembler_class", None) is not None, "made per spec"
+        self._part_idn = idn
+        self._facts: Facts | None = None
+        """What robosuite reads of the spec, from its make record (None: read from the spec)."""
+        file = spec_file(type(self))
+        if file is not None:
+            self._facts = recorded_facts(_material("gripper", self, file, idn), self._spec_facts)
+            if self._facts["file"]:
+                super().__init__(recorded_part_file(self._facts["file"], lambda: self.part), idn=idn)
+                return
         super().__init__(part_file(self.part), idn=idn)
+
+    @property
+    def part(self) -> GripperModel:
+        """Our gripper: its spec, actions and state (made on first use when the make record answered
+        what robosuite reads)."""
+        made: GripperModel | None = self.__dict__.get("_part")
+        if made is None:
+            made = robosuite_part(spec_class_of(type(self)), self._part_idn)
+            if made.action_map is None and made.actuators:
+                actuators = ", ".join(name[len(made.naming_prefix) :] for name in made.actuators)
+                message = (
+                    f"the gripper has actuators ({actuators}) but no 'actions:' saying how a policy's "
+                    "actions drive "
+                    "them; robosuite needs one (see docs/robosuite.md, Gripper actions)"
+                )
+                raise SpecError(made.spec_problem(ACTIONS, message))
+            self.__dict__["_part"] = made
+        return made
+
+    def _spec_facts(self) -> tuple[Facts, Origins]:
+        """What robosuite reads of the spec (the part made now), with the files it depends on."""
+        part = self.part
+        spec: Any = part.spec
+        inputs = part.part_inputs()
+        actions = part.action_map
+        facts = {
+            "file": file_key(inputs) if inputs.spec_made else "",
+            "dof": part.dof,
+            "speed": part.speed,
+            "init_qpos": spec.init_qpos,
+            "important_sites": dict(spec.important_sites),
+            "important_geoms": {role: list(names) for role, names in spec.important_geoms.items()},
+            "important_sensors": dict(spec.important_sensors),
+            "actions": None
+            if actions is None
+            else {field.name: _plain(getattr(actions, field.name)) for field in dataclasses.fields(actions)},
+        }
+        return facts, origins_of([part])
+
+    def _of_spec(self, name: str, read: Callable[[GripperModel], Any]) -> Any:
+        """A value robosuite reads of the gripper: the make record's, else ``read`` of our part."""
+        return self._facts[name] if self._facts is not None else read(self.part)
 
     @property
     def dof(self) -> int:
         """Number of action values the gripper takes."""
-        return self.part.dof
+        return int(self._of_spec("dof", lambda part: part.dof))
 
     @property
     def speed(self) -> float:
         """How far one action moves an output."""
-        return self.part.speed
+        return float(self._of_spec("speed", lambda part: part.speed))
 
     @property
     def init_qpos(self) -> FloatArray:
         """The spec's open pose; without one, every joint at zero (MuJoCo's own ``qpos0`` for joints
         without a ``ref``), as robosuite's reset writes one value per gripper joint."""
-        values = self.part.spec.init_qpos
+        values = self._of_spec("init_qpos", lambda part: part.spec.init_qpos)
         return np.zeros(len(self.joints)) if values is None else np.array(values, dtype=float)
 
     def format_action(self, action: Sequence[float]) -> FloatArray:
         """One output in [-1, 1] per actuator; ``current_action`` is the state robosuite resets."""
+        if self._facts is not None and "_part" not in self.__dict__:
+            recorded = self._facts["actions"]
+            if recorded is None:
+                return np.asarray(action, dtype=float)  # no actuators: robosuite's null gripper
+            actions = self.__dict__.get("_actions")
+            if actions is None:
+                actions = self.__dict__["_actions"] = ActionMap(**_arrays(recorded))
+            outputs, self.current_action = actions.format_action(
+                action, np.asarray(self.current_action, dtype=np.float64)
+            )
+            return outputs
         if self.part.action_map is None:
             return np.asarray(action, dtype=float)  # no actuators: robosuite's null gripper
         self.part.current_action = np.asarray(self.current_action, dtype=np.float64)
@@ -91,15 +155,42 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
 
     @property
     def _important_sites(self) -> dict[str, str]:
-        return {**super()._important_sites, **self.part.spec.important_sites}
+        return {
+            **super()._important_sites,
+            **self._of_spec("important_sites", lambda p: p.spec.important_sites),
+        }
 
     @property
     def _important_geoms(self) -> dict[str, list[str]]:
-        return {**super()._important_geoms, **{k: list(v) for k, v in self.part.spec.important_geoms.items()}}
+        geoms = self._of_spec("important_geoms", lambda part: part.spec.important_geoms)
+        return {**super()._important_geoms, **{k: list(v) for k, v in geoms.items()}}
 
     @property
     def _important_sensors(self) -> dict[str, str]:
-        return {**super()._important_sensors, **self.part.spec.important_sensors}
+        return {
+            **super()._important_sensors,
+            **self._of_spec("important_sensors", lambda part: part.spec.important_sensors),
+        }
+
+
+def _material(family: str, made: object, file: str, idn: int | str) -> dict[str, Any]:
+    """What a make record of a gripper or base is keyed by, besides the environment."""
+    return {"family": family, "name": type(made).__name__, "file": file, "idn": str(idn), "added": []}
+
+
+def _plain(value: Any) -> Any:
+    """A value of an action map as JSON holds it (arrays as lists)."""
+    return value.tolist() if isinstance(value, np.ndarray) else value
+
+
+def _arrays(recorded: dict[str, Any]) -> dict[str, Any]:
+    """An action map's fields from its record (its arrays as the map makes them)."""
+    return {
+        **recorded,
+        "source": np.array(recorded["source"], dtype=np.int64),
+        "sign": np.array(recorded["sign"], dtype=float),
+        "held": np.array(recorded["held"], dtype=float),
+    }
 
 
 class SpecBase:
@@ -109,30 +200,63 @@ class SpecBase:
     """The assembler's class for the spec."""
 
     def __init__(self, idn: int | str = 0) -> None:
-        assert self.assembler_class is not None, "made per spec by robosuite_class_of"
-        self.part: RobotBaseModel = robosuite_part(self.assembler_class, idn)
-        """Our base."""
+        assert inspect.getattr_static(type(self), "assembler_class", None) is not None, "made per spec"
+        self._part_idn = idn
+        self._facts: Facts | None = None
+        """What robosuite reads of the spec, from its make record (None: read from the spec)."""
+        file = spec_file(type(self))
+        if file is not None:
+            self._facts = recorded_facts(_material("base", self, file, idn), self._spec_facts)
+            if self._facts["file"]:
+                file = recorded_part_file(self._facts["file"], lambda: self.part)
+                super().__init__(file, idn=idn)  # type: ignore[call-arg]
+                return
         super().__init__(part_file(self.part), idn=idn)  # type: ignore[call-arg]
+
+    @property
+    def part(self) -> RobotBaseModel:
+        """Our base (made on first use when the make record answered what robosuite reads)."""
+        made: RobotBaseModel | None = self.__dict__.get("_part")
+        if made is None:
+            made = self.__dict__["_part"] = robosuite_part(spec_class_of(type(self)), self._part_idn)
+        return made
+
+    def _spec_facts(self) -> tuple[Facts, Origins]:
+        """What robosuite reads of the spec (the part made now), with the files it depends on."""
+        part = self.part
+        inputs = part.part_inputs()
+        facts = {
+            "file": file_key(inputs) if inputs.spec_made else "",
+            "top_offset": part.top_offset.tolist(),
+            "bottom_offset": part.bottom_offset.tolist(),
+            "horizontal_radius": float(part.horizontal_radius),
+            "init_qpos": part.spec.init_qpos,
+        }
+        return facts, origins_of([part])
+
+    def _of_spec(self, name: str, read: Callable[[RobotBaseModel], Any]) -> Any:
+        """A value robosuite reads of the base: the make record's, else ``read`` of our part."""
+        return self._facts[name] if self._facts is not None else read(self.part)
 
     @property
     def top_offset(self) -> FloatArray:
         """Offset from the base's root to the surface the robot stands on."""
-        return self.part.top_offset
+        return np.array(self._of_spec("top_offset", lambda part: part.top_offset), dtype=float)
 
     @property
     def bottom_offset(self) -> FloatArray:
         """Offset from the base's root to its bottom."""
-        return self.part.bottom_offset
+        return np.array(self._of_spec("bottom_offset", lambda part: part.bottom_offset), dtype=float)
 
     @property
     def horizontal_radius(self) -> float:
         """Footprint radius (metres)."""
-        return self.part.horizontal_radius
+        return float(self._of_spec("horizontal_radius", lambda part: part.horizontal_radius))
 
     @property
     def init_qpos(self) -> FloatArray:
         """The legs' initial positions (robosuite's LeggedRobot reads them from a legged base)."""
-        return np.array(self.part.spec.init_qpos or [], dtype=float)
+        return np.array(self._of_spec("init_qpos", lambda part: part.spec.init_qpos) or [], dtype=float)
 
 
 def robosuite_class_of(spec_class: type[PartModel]) -> type:

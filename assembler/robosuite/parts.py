@@ -13,6 +13,7 @@ text is the lossless emission, kept in the cache across processes (:mod:`.files`
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from typing import TypeVar
 
 import mujoco
@@ -31,7 +32,7 @@ from assembler.robosuite.conventions import (
     driven_voltage_motors,
     robot_type_name,
 )
-from assembler.robosuite.files import robosuite_file
+from assembler.robosuite.files import recorded_file, robosuite_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.spec.fieldpath import FieldPath
@@ -141,6 +142,23 @@ def part_file(part: PartModel) -> str:
     """The file robosuite reads for ``part`` alone (unprefixed: robosuite prefixes it)."""
     inputs = part.part_inputs()
     return robosuite_file(inputs, inputs.spec_made, [part], part.part_mjspec)
+
+
+def recorded_part_file(key: str, part: Callable[[], PartModel]) -> str:
+    """:func:`part_file` of the part ``part()`` makes, from the key a make record holds: ``part()``
+    is called only when no file is kept under ``key``."""
+    return recorded_file(key, lambda: [part()], lambda parts: parts[0].part_mjspec())
+
+
+def recorded_assembly_file(key: str, robot: Callable[[], RobotModel]) -> str:
+    """:func:`assembly_file` of the robot ``robot()`` makes, from the key a make record holds:
+    ``robot()`` is called only when no file is kept under ``key``."""
+
+    def parts() -> list[PartModel]:
+        made = robot()
+        return [made, *made.models]
+
+    return recorded_file(key, parts, lambda parts: _world_checked(robot()))
 
 
 def assembly_file(robot: RobotModel) -> str:

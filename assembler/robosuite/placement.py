@@ -32,7 +32,17 @@ DEFAULT_OFFSETS: dict[str, dict[str, Offset3]] = {
 def offsets(spec: Any) -> dict[str, Any]:
     """Per arena, the offset in the shape robosuite reads: the spec's, else robosuite's default for the
     spec's arm type."""
-    arenas = {**DEFAULT_OFFSETS.get(str(spec.arm_type), {}), **spec.base_xpos_offset}
+    return in_robosuites_shape(arena_offsets(spec))
+
+
+def arena_offsets(spec: Any) -> dict[str, Offset3]:
+    """Per arena, the offset as written (numbers, or expressions of ``table_length``): the spec's,
+    else robosuite's default for the spec's arm type."""
+    return {**DEFAULT_OFFSETS.get(str(spec.arm_type), {}), **spec.base_xpos_offset}
+
+
+def in_robosuites_shape(arenas: dict[str, Offset3]) -> dict[str, Any]:
+    """:func:`arena_offsets` as robosuite reads them (``table``'s a function of the table length)."""
     return {arena: _for_robosuite(arena, offset) for arena, offset in arenas.items()}
 
 

@@ -23,7 +23,6 @@ from __future__ import annotations
 import json
 from collections.abc import Iterator
 from dataclasses import asdict, dataclass
-from pathlib import Path
 from typing import Any
 
 import mujoco
@@ -43,6 +42,7 @@ from assembler.models import (
     RobotBaseModel,
 )
 from assembler.robosuite.conventions import base_in_robosuite, offered, robot_type_name
+from assembler.robosuite.make_records import held_file, shipped_class
 from assembler.robosuite.robot_class import check_offsets
 
 FORMAT = 1
@@ -126,13 +126,6 @@ class _Unrecorded(Exception):
     class is none robosuite takes."""
 
 
-def _held_file(family: str, name: str) -> Path | None:
-    """The file the registry holds ``name`` by (not read yet), if it holds it by one."""
-    files = getattr(REGISTRIES[family].unmade, "files", None)
-    found = files.get((family, name)) if isinstance(files, dict) else None
-    return found if isinstance(found, Path) else None
-
-
 def _origins(spec_class: type[PartModel]) -> list[tuple[str, int, int]]:
     """The files the registration of ``spec_class`` depends on, with their (size, mtime_ns) when read."""
     classes = [spec_class]
@@ -146,14 +139,14 @@ def recorded(family: str, name: str) -> Registration | None:
     """The registration of a held shipped name from its record, without reading its spec; None
     when there is no current record (the spec is read now, its class made and the record written:
     the caller installs the class) or the name is not held by a file (looked up as before)."""
-    file = _held_file(family, name)
+    file = held_file(family, name)
     if file is None or cache_disabled():
         REGISTRIES[family].get(name)  # a lookup makes it (or says what is wrong with it)
         return None
     made: list[type[PartModel]] = []
 
     def read() -> Iterator[str]:  # iterated only on a miss: the spec is read then
-        spec_class = REGISTRIES[family].get(name)
+        spec_class = shipped_class(family, name, lookup=False)
         if spec_class is None or not part_origins(spec_class):
             raise _Unrecorded
         if issubclass(spec_class, ManipulatorModel):  # its base, read for its type, is recorded too
@@ -212,7 +205,7 @@ class SpecClassOf:
         self.owner = owner
 
     def __get__(self, instance: object, owner: type | None = None) -> type[PartModel]:
-        spec_class = REGISTRIES[self.family].lookup(self.name)
+        spec_class: type[PartModel] = shipped_class(self.family, self.name)
         if self.owner is not None:
             setattr(self.owner, "assembler_class", spec_class)  # noqa: B010 (looked up once)
         return spec_class

@@ -22,8 +22,9 @@ no class of its own). Grippers and bases likewise (:mod:`assembler.robosuite.par
 
 from __future__ import annotations
 
+import inspect
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any, ClassVar, TypeVar
 
 import numpy as np
@@ -38,13 +39,31 @@ from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorM
 from assembler.models.part import FloatArray
 from assembler.models.registering import Registry
 from assembler.robosuite.conventions import base_in_robosuite
-from assembler.robosuite.parts import assembly_file, part_file, robosuite_part
-from assembler.robosuite.placement import offsets
+from assembler.robosuite.files import file_key
+from assembler.robosuite.make_records import (
+    Facts,
+    Origins,
+    origins_of,
+    recorded_facts,
+    spec_class_of,
+    spec_file,
+)
+from assembler.robosuite.parts import (
+    assembly_file,
+    part_file,
+    recorded_assembly_file,
+    recorded_part_file,
+    robosuite_part,
+)
+from assembler.robosuite.placement import arena_offsets, in_robosuites_shape, offsets
 from assembler.robosuite.same_names import check_same_names
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema.expressions import ExpressionError
 
 P = TypeVar("P", bound=PartModel)
+
+GROUPS = ("arm", "base", "torso", "head", "legs")
+"""robosuite's joint and actuator groups (our parts name the arms' ``arm_joints``)."""
 
 _WITHOUT_INIT_QPOS: set[str] = set()
 """Robots whose missing ``init_qpos`` was said (once per robot and process)."""
@@ -75,11 +94,96 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     """robosuite's base object the robot stands on (None until ``add_base``)."""
 
     def __init__(self, idn: int | str = 0) -> None:
-        if self.assembler_class is None:
+        if inspect.getattr_static(type(self), "assembler_class", None) is None:
             raise AssemblerError("SpecRobot is made per spec: use assembler.robosuite.robot_class(name)")
-        self.assembly: ManipulatorModel = robosuite_part(self.assembler_class, idn)
-        """Our robot, base and grippers, built the assembler's way."""
+        self._robot_idn = idn
+        self._added: list[tuple[Any, str | None]] = []
+        """robosuite's base, then grippers with the arm names they were added for, in order: what
+        our assembly is given when it is made (at once, or on first use when recorded)."""
+        self._facts: Facts | None = None
+        """What robosuite reads of the spec, from its make record (None: read from the spec, for a
+        class not made from a shipped spec file, or with the cache off: it has no record kept)."""
+        self._file = spec_file(type(self))
+        if self._file is not None:
+            self._facts = recorded_facts(self._material(), self._spec_facts)
+            if self._facts["file"]:
+                super().__init__(recorded_part_file(self._facts["file"], lambda: self.assembly), idn=idn)
+                return
         super().__init__(part_file(self.assembly), idn=idn)
+
+    @property
+    def assembly(self) -> ManipulatorModel:
+        """Our robot, base and grippers, built the assembler's way (made on first use when the make
+        record answered what robosuite reads)."""
+        made: ManipulatorModel | None = self.__dict__.get("_assembly")
+        if made is None:
+            made = self.__dict__["_assembly"] = robosuite_part(spec_class_of(type(self)), self._robot_idn)
+            for part, arm_name in self._added:
+                self._give(made, part, arm_name)
+        return made
+
+    # ----- the make record --------------------------------------------------------------------
+
+    def _material(self, *added: tuple[Any, str | None]) -> dict[str, Any]:
+        """What a make record of this robot (with ``added``) is keyed by, besides the environment."""
+        return {
+            "family": "robot",
+            "name": type(self).__name__,
+            "file": self._file,
+            "idn": str(self._robot_idn),
+            "added": [[type(part).__name__, str(part.idn), arm] for part, arm in added],
+        }
+
+    def _spec_facts(self) -> tuple[Facts, Origins]:
+        """What robosuite reads of the spec (the part made now), with the files it depends on."""
+        robot = self.assembly
+        spec: Any = robot.spec
+        inputs = robot.part_inputs()
+        facts = {
+            "file": file_key(inputs) if inputs.spec_made else "",
+            "name": str(spec.name),
+            "arm_type": str(spec.arm_type),
+            "eef_name": {arm: spec.eef_body(arm) for arm in self.arms},
+            "default_base": str(base_in_robosuite(spec)),
+            "default_gripper": {arm: spec.default_grippers.get(arm) for arm in self.arms},
+            "default_controller_config": dict(spec.default_controller_config),
+            "init_qpos_declared": spec.init_qpos is not None,
+            "describe": robot.describe(),
+            "init_base_qpos": spec.robosuite.init_base_qpos,
+            "init_torso_qpos": spec.robosuite.init_torso_qpos,
+            "arenas": arena_offsets(spec),
+            "top_offset": list(spec.top_offset),
+            "horizontal_radius": float(spec.horizontal_radius),
+        }
+        return facts, origins_of([robot])
+
+    def _assembled_facts(self) -> tuple[Facts, Origins]:
+        """What robosuite reads of the assembly as it stands (joints and actuators by group, the
+        initial pose, the key of its file), with the files it depends on."""
+        robot = self.assembly
+        inputs = robot.build_inputs()
+        facts = {
+            "file": file_key(inputs) if inputs.cacheable else "",
+            "init_qpos": robot.init_qpos.tolist(),
+            **{f"{group}_joints": list(getattr(robot, f"{group}_joints")) for group in GROUPS},
+            **{f"{group}_actuators": list(getattr(robot, f"{group}_actuators")) for group in GROUPS},
+        }
+        return facts, origins_of([robot, *robot.models])
+
+    def _recorded(self) -> Facts | None:
+        """The make record of the assembly as it stands, when robosuite's values come from records
+        (made now, and recorded, if the assembly has none)."""
+        if self._facts is None:
+            return None
+        return recorded_facts(self._material(*self._added), self._assembled_facts)
+
+    def _fact(self, name: str) -> Any:
+        assert self._facts is not None
+        return self._facts[name]
+
+    def _of_spec(self, name: str, read: Callable[[Any], Any]) -> Any:
+        """A value robosuite reads of the spec: the make record's, else ``read`` of the spec."""
+        return self._facts[name] if self._facts is not None else read(self.spec)
 
     # ----- what robosuite reads from the spec ---------------------------------------------
 
@@ -91,51 +195,60 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
     @property
     def arm_type(self) -> str:
         """single or bimanual."""
-        return str(self.spec.arm_type)
+        return str(self._of_spec("arm_type", lambda spec: spec.arm_type))
 
     @property
     def _eef_name(self) -> dict[str, str]:
+        if self._facts is not None:
+            return dict(self._fact("eef_name"))
         return {arm: self.spec.eef_body(arm) for arm in self.arms}
 
     @property
     def default_base(self) -> str:
         """The spec's base, or its ``robosuite.stand_in_base`` (robosuite cannot build a robot without)."""
-        return str(base_in_robosuite(self.spec))
+        return str(self._of_spec("default_base", base_in_robosuite))
 
     @property
     def default_gripper(self) -> dict[str, str | None]:
         """Per arm, the spec's gripper (None: robosuite's null gripper)."""
+        if self._facts is not None:
+            return dict(self._fact("default_gripper"))
         return {arm: self.spec.default_grippers.get(arm) for arm in self.arms}
 
     @property
     def default_controller_config(self) -> dict[str, str]:
         """Controller config name per body part (robosuite's fallback for parts its config lacks)."""
-        return dict(self.spec.default_controller_config)
+        return dict(self._of_spec("default_controller_config", lambda spec: spec.default_controller_config))
 
     @property
     def init_qpos(self) -> FloatArray:
         """The spec's initial joint positions; without them, the model file's ``qpos0`` (each joint's
         ``ref``, zero unless the file says otherwise), said once per robot: robosuite resets to it."""
-        if self.spec.init_qpos is None and self.spec.name not in _WITHOUT_INIT_QPOS:
-            _WITHOUT_INIT_QPOS.add(self.spec.name)
+        recorded = self._recorded()
+        values = np.array(recorded["init_qpos"], dtype=float) if recorded else self.assembly.init_qpos
+        declared = self._fact("init_qpos_declared") if recorded else self.spec.init_qpos is not None
+        name = self._fact("name") if recorded else self.spec.name
+        if not declared and name not in _WITHOUT_INIT_QPOS:
+            _WITHOUT_INIT_QPOS.add(name)
+            described = self._fact("describe") if recorded else self.assembly.describe()
             warnings.warn(
-                f"{self.assembly.describe()} has no init_qpos: robosuite resets its joints to the model "
-                f"file's qpos0 {list(self.assembly.init_qpos)}; set init_qpos in the spec to choose the pose",
+                f"{described} has no init_qpos: robosuite resets its joints to the model "
+                f"file's qpos0 {list(values)}; set init_qpos in the spec to choose the pose",
                 AssemblerWarning,
                 stacklevel=2,
             )
-        return self.assembly.init_qpos
+        return values
 
     @property
     def init_base_qpos(self) -> FloatArray | None:
         """The base joints' positions at each reset (``robosuite.init_base_qpos``), or None."""
-        values = self.spec.robosuite.init_base_qpos
+        values = self._of_spec("init_base_qpos", lambda spec: spec.robosuite.init_base_qpos)
         return None if values is None else np.array(values, dtype=float)
 
     @property
     def init_torso_qpos(self) -> FloatArray | None:
         """The torso joints' positions at each reset (``robosuite.init_torso_qpos``), or None."""
-        values = self.spec.robosuite.init_torso_qpos
+        values = self._of_spec("init_torso_qpos", lambda spec: spec.robosuite.init_torso_qpos)
         return None if values is None else np.array(values, dtype=float)
 
     @property
@@ -143,16 +256,18 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         """Per arena, robosuite's shapes: ``["table"]`` a function of the table length (positional),
         every other arena three numbers; arenas the spec leaves out get robosuite's defaults
         (:mod:`assembler.robosuite.placement`)."""
+        if self._facts is not None:
+            return in_robosuites_shape({arena: tuple(value) for arena, value in self._fact("arenas").items()})
         return offsets(self.spec)
 
     @property
     def top_offset(self) -> FloatArray:
         """Offset from the robot's root to its top."""
-        return np.array(self.spec.top_offset, dtype=float)
+        return np.array(self._of_spec("top_offset", lambda spec: spec.top_offset), dtype=float)
 
     @property
     def _horizontal_radius(self) -> float:
-        return float(self.spec.horizontal_radius)
+        return float(self._of_spec("horizontal_radius", lambda spec: spec.horizontal_radius))
 
     @property
     def gripper_mount_pos_offset(self) -> dict[str, Any]:
@@ -170,43 +285,74 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         """Stand our robot on the spec base of ``base``'s name; ``base`` keeps its name lists."""
         if self.base is not None:
             raise ValueError("Mount already added for this robot!")  # robosuite's words
-        self.assembly.add_base(our_instance(REGISTERED_BASES, base))
+        self._add(base, None)
         self.base = base
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
     def add_gripper(self, gripper: RobosuiteGripper, arm_name: str | None = None) -> None:
         """Put our spec gripper of ``gripper``'s name on the arm whose end-effector body is ``arm_name``
         (every arm when None, as robosuite does)."""
-        arms = [arm for arm in self.arms if arm_name is None or self.eef_name[arm] == arm_name]
+        arms = self._arms_of(arm_name)
         if not arms:
             raise ValueError(f"{type(self).__name__} has no end-effector body named {arm_name}")
-        for index, arm in enumerate(arms):
+        for arm in arms:
             if self.eef_name[arm] in self.grippers:
                 raise ValueError("Attempts to add multiple grippers to one body")  # robosuite's words
-            part = our_instance(REGISTERED_GRIPPERS, gripper, reuse=index == 0)  # one instance per hand
-            self.assembly.add_gripper(part, arm=arm)
+        self._add(gripper, arm_name)
+        for arm in arms:
             self.grippers[self.eef_name[arm]] = gripper
         self.cameras = self.get_element_names(self.worldbody, "camera")
 
+    def _arms_of(self, arm_name: str | None) -> list[str]:
+        return [arm for arm in self.arms if arm_name is None or self.eef_name[arm] == arm_name]
+
+    def _add(self, part: Any, arm_name: str | None) -> None:
+        """Give our assembly ``part`` (a base, or a gripper for ``arm_name``'s arms): now when it is
+        made, or when it is made later (robosuite's values answered by records); a part not of ours
+        is looked up now, so that an error about it is raised here as before."""
+        self._added.append((part, arm_name))
+        if "_assembly" in self.__dict__:
+            self._give(self.assembly, part, arm_name)
+        elif inspect.getattr_static(type(part), "assembler_class", None) is None:
+            self.assembly  # noqa: B018 (made now, given every part added so far, this one too)
+
+    def _give(self, assembly: ManipulatorModel, part: Any, arm_name: str | None) -> None:
+        if isinstance(part, RobosuiteBase):
+            assembly.add_base(our_instance(REGISTERED_BASES, part))
+            return
+        for index, arm in enumerate(self._arms_of(arm_name)):
+            ours = our_instance(REGISTERED_GRIPPERS, part, reuse=index == 0)  # one instance per hand
+            assembly.add_gripper(ours, arm=arm)
+
     def update_joints(self) -> None:
         """robosuite's joint groups, from the spec's ``joint_groups`` (or robosuite's name rules)."""
-        self._arms_joints = list(self.assembly.arm_joints)
-        self._base_joints = self.assembly.base_joints
-        self._torso_joints = self.assembly.torso_joints
-        self._head_joints = self.assembly.head_joints
-        self._legs_joints = self.assembly.legs_joints
+        robot: Any = self._recorded()
+        if robot is None:
+            robot = {f"{group}_joints": getattr(self.assembly, f"{group}_joints") for group in GROUPS}
+        self._arms_joints = list(robot["arm_joints"])
+        self._base_joints = list(robot["base_joints"])
+        self._torso_joints = list(robot["torso_joints"])
+        self._head_joints = list(robot["head_joints"])
+        self._legs_joints = list(robot["legs_joints"])
 
     def update_actuators(self) -> None:
         """robosuite's actuator groups: each actuator with the joint it drives."""
-        self._arms_actuators = list(self.assembly.arm_actuators)
-        self._base_actuators = self.assembly.base_actuators
-        self._torso_actuators = self.assembly.torso_actuators
-        self._head_actuators = self.assembly.head_actuators
-        self._legs_actuators = self.assembly.legs_actuators
+        robot: Any = self._recorded()
+        if robot is None:
+            robot = {f"{group}_actuators": getattr(self.assembly, f"{group}_actuators") for group in GROUPS}
+        self._arms_actuators = list(robot["arm_actuators"])
+        self._base_actuators = list(robot["base_actuators"])
+        self._torso_actuators = list(robot["torso_actuators"])
+        self._head_actuators = list(robot["head_actuators"])
+        self._legs_actuators = list(robot["legs_actuators"])
 
     def set_mujoco_model(self, mujoco_model: Any = None) -> None:
         """Make our assembly the tree robosuite merges into the world, then compile it as robosuite does."""
-        MujocoXML.__init__(self, assembly_file(self.assembly))
+        recorded = self._recorded()
+        if recorded is not None and recorded["file"]:
+            MujocoXML.__init__(self, recorded_assembly_file(recorded["file"], lambda: self.assembly))
+        else:
+            MujocoXML.__init__(self, assembly_file(self.assembly))
         self._point_elements_at_tree()
         self.cameras = self.get_element_names(self.worldbody, "camera")
         super().set_mujoco_model(mujoco_model)
@@ -226,16 +372,17 @@ def our_instance(registry: Registry[P], given: Any, reuse: bool = True) -> P:
     """Our part for ``given`` (a robosuite gripper or base object): when it is one of
     ours, the very part whose model file robosuite read (its XML is read once; ``reuse``), else a new
     part made for robosuite of :func:`our_part`."""
-    own = getattr(given, "part", None)
-    if reuse and getattr(type(given), "assembler_class", None) is not None and own is not None:
-        return own  # type: ignore[no-any-return]
+    if reuse and inspect.getattr_static(type(given), "assembler_class", None) is not None:
+        own = getattr(given, "part", None)
+        if own is not None:
+            return own  # type: ignore[no-any-return]
     return robosuite_part(our_part(registry, given), given.idn)
 
 
 def our_part(registry: Registry[P], given: Any) -> type[P]:
     """Our spec class for ``given`` (a robosuite gripper or base object): its own when
     it is one of ours, else our spec of the same name, whose names must be robosuite's."""
-    spec_class = getattr(type(given), "assembler_class", None)
+    spec_class: type[P] | None = spec_class_of(type(given))
     if spec_class is None:
         name = type(given).__name__
         spec_class = registry.get(name)
