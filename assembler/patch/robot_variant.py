@@ -152,7 +152,7 @@ def patched_variant(robot: RobotModel, store: bool = True) -> CompiledModel | No
     patch kept for its entry, else by one worked out now (and kept unless ``store`` is False);
     None, with the reason logged, when it must be compiled."""
     key = robot.entry_key  # get_model's key for this robot, set before it asks
-    kept = kept_model(key) if key is not None else None
+    kept = kept_model(key) if key is not None and _refusal(robot) is None else None
     if kept is not None:
         LOG.debug("%s patched from its plain robot's cached model by its kept patch", robot.name)
         return CompiledModel(kept, Keyframe.of(kept))
