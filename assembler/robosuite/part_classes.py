@@ -61,18 +61,14 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
     current_action: FloatArray
     """The gripper's last outputs (robosuite's state, zeroed at each reset)."""
 
+    _part_idn: int | str
+    """The idn our part is made with."""
+
+    _facts: Facts | None
+    """What robosuite reads of the spec, from its make record (None: read from the spec)."""
+
     def __init__(self, idn: int | str = 0) -> None:
-        assert inspect.getattr_static(type(self), "assembler_class", None) is not None, "made per spec"
-        self._part_idn = idn
-        self._facts: Facts | None = None
-        """What robosuite reads of the spec, from its make record (None: read from the spec)."""
-        file = spec_file(type(self))
-        if file is not None:
-            self._facts = recorded_facts(_material("gripper", self, file, idn), self._spec_facts)
-            if self._facts["file"]:
-                super().__init__(recorded_part_file(self._facts["file"], lambda: self.part), idn=idn)
-                return
-        super().__init__(part_file(self.part), idn=idn)
+        super().__init__(_robosuite_file(self, "gripper", idn), idn=idn)
 
     @property
     def part(self) -> GripperModel:
@@ -173,9 +169,20 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
         }
 
 
-def _material(family: str, made: object, file: str, idn: int | str) -> dict[str, Any]:
-    """What a make record of a gripper or base is keyed by, besides the environment."""
-    return {"family": family, "name": type(made).__name__, "file": file, "idn": str(idn), "added": []}
+def _robosuite_file(made: SpecGripper | SpecBase, family: str, idn: int | str) -> str:
+    """The file robosuite's class of a gripper or base is made from: its kept part file, named by
+    its make record (our part not made), else our part's file (the part made now); sets the
+    object's ``_facts`` (None when the class keeps no make record)."""
+    assert inspect.getattr_static(type(made), "assembler_class", None) is not None, "made per spec"
+    made._part_idn = idn
+    made._facts = None
+    file = spec_file(type(made))
+    if file is not None:
+        material = {"family": family, "name": type(made).__name__, "file": file, "idn": str(idn), "added": []}
+        made._facts = recorded_facts(material, made._spec_facts)
+        if made._facts["file"]:
+            return recorded_part_file(made._facts["file"], lambda: made.part)
+    return part_file(made.part)
 
 
 def _plain(value: Any) -> Any:
@@ -199,19 +206,14 @@ class SpecBase:
     assembler_class: ClassVar[type[RobotBaseModel] | None] = None
     """The assembler's class for the spec."""
 
+    _part_idn: int | str
+    """The idn our part is made with."""
+
+    _facts: Facts | None
+    """What robosuite reads of the spec, from its make record (None: read from the spec)."""
+
     def __init__(self, idn: int | str = 0) -> None:
-        assert inspect.getattr_static(type(self), "assembler_class", None) is not None, "made per spec"
-        self._part_idn = idn
-        self._facts: Facts | None = None
-        """What robosuite reads of the spec, from its make record (None: read from the spec)."""
-        file = spec_file(type(self))
-        if file is not None:
-            self._facts = recorded_facts(_material("base", self, file, idn), self._spec_facts)
-            if self._facts["file"]:
-                file = recorded_part_file(self._facts["file"], lambda: self.part)
-                super().__init__(file, idn=idn)  # type: ignore[call-arg]
-                return
-        super().__init__(part_file(self.part), idn=idn)  # type: ignore[call-arg]
+        super().__init__(_robosuite_file(self, "base", idn), idn=idn)  # type: ignore[call-arg]
 
     @property
     def part(self) -> RobotBaseModel:

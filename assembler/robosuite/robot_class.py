@@ -324,27 +324,25 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
             ours = our_instance(REGISTERED_GRIPPERS, part, reuse=index == 0)  # one instance per hand
             assembly.add_gripper(ours, arm=arm)
 
+    def _groups(self, kind: str) -> list[list[str]]:
+        """robosuite's groups of ``kind`` (``joints`` or ``actuators``) in :data:`GROUPS` order: from
+        the make record of the assembly as it stands, else from our assembly."""
+        recorded = self._recorded()
+        if recorded is None:
+            return [list(getattr(self.assembly, f"{group}_{kind}")) for group in GROUPS]
+        return [list(recorded[f"{group}_{kind}"]) for group in GROUPS]
+
     def update_joints(self) -> None:
         """robosuite's joint groups, from the spec's ``joint_groups`` (or robosuite's name rules)."""
-        robot: Any = self._recorded()
-        if robot is None:
-            robot = {f"{group}_joints": getattr(self.assembly, f"{group}_joints") for group in GROUPS}
-        self._arms_joints = list(robot["arm_joints"])
-        self._base_joints = list(robot["base_joints"])
-        self._torso_joints = list(robot["torso_joints"])
-        self._head_joints = list(robot["head_joints"])
-        self._legs_joints = list(robot["legs_joints"])
+        groups = self._groups("joints")
+        self._arms_joints, self._base_joints, self._torso_joints = groups[:3]
+        self._head_joints, self._legs_joints = groups[3:]
 
     def update_actuators(self) -> None:
         """robosuite's actuator groups: each actuator with the joint it drives."""
-        robot: Any = self._recorded()
-        if robot is None:
-            robot = {f"{group}_actuators": getattr(self.assembly, f"{group}_actuators") for group in GROUPS}
-        self._arms_actuators = list(robot["arm_actuators"])
-        self._base_actuators = list(robot["base_actuators"])
-        self._torso_actuators = list(robot["torso_actuators"])
-        self._head_actuators = list(robot["head_actuators"])
-        self._legs_actuators = list(robot["legs_actuators"])
+        groups = self._groups("actuators")
+        self._arms_actuators, self._base_actuators, self._torso_actuators = groups[:3]
+        self._head_actuators, self._legs_actuators = groups[3:]
 
     def set_mujoco_model(self, mujoco_model: Any = None) -> None:
         """Make our assembly the tree robosuite merges into the world, then compile it as robosuite does."""
