@@ -35,10 +35,10 @@ import mujoco
 from assembler.answers.load_model import assembly_request
 from assembler.answers.records import KeyedRequest, record_of, recorded_model, recorded_xml
 from assembler.cache.requests import RequestRecord
+from assembler.compiler.keyframe import Keyframe
 from assembler.compiler.stored import entry_key
 from assembler.files.cache_location import volatile_folders
 from assembler.files.writing import write_atomically
-from assembler.mjcf.keyframe import Keyframe
 from assembler.spec.part_arguments import DEFAULT, ArgumentKind, argument_kind
 
 ASSEMBLE = "load_model"

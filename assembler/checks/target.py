@@ -13,9 +13,9 @@ from pathlib import Path
 
 import mujoco
 
+from assembler.compiler.keyframe import HOME_KEY
 from assembler.errors import Location
 from assembler.files.paths import display_path
-from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import GripperModel, PartModel, RobotModel
 from assembler.spec.fieldpath import FieldPath
 

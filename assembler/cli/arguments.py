@@ -10,7 +10,7 @@ import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from assembler.mjcf.geom_group_numbers import GROUP_COUNT
+from assembler.mjcf import GROUP_COUNT
 
 Define = Callable[[argparse.ArgumentParser], None]
 

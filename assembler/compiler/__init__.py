@@ -1,7 +1,7 @@
 """The one compile path: an assembly (a MuJoCo spec, its home pose, the files it read) in, a compiled
-model with its ``home`` keyframe out (:mod:`.compile`), from the compiled-model cache when nothing
-it read changed (:mod:`.service`, whose lookup alone is :mod:`.stored`). It takes values, never
-models: models call down into it from ``get_model()``."""
+model with its ``home`` keyframe out (:mod:`.compile`; the keyframe itself in :mod:`.keyframe`), from
+the compiled-model cache when nothing it read changed (:mod:`.service`, whose lookup alone is
+:mod:`.stored`). It takes values, never models: models call down into it from ``get_model()``."""
 
 from __future__ import annotations
 

@@ -24,9 +24,9 @@ import mujoco
 
 from assembler.cache.mesh_data import MSH_CONTENT_TYPE
 from assembler.cache.mesh_swap import MeshSwap, compile_from_store, use_stored_meshes
+from assembler.compiler.keyframe import compile_spec, compile_with_home
 from assembler.errors import MjcfError
 from assembler.mjcf.emit import to_xml
-from assembler.mjcf.keyframe import compile_spec, compile_with_home
 
 _PLAIN_NAME = re.compile(r"^[A-Za-z0-9_.:\-]+$")
 """Mesh names written verbatim in the XML (no character MuJoCo's writer would escape)."""

@@ -5,7 +5,7 @@ Models build MuJoCo specs; this module compiles them. A lookup hashes the build 
 (:mod:`assembler.cache.key`) and, on a hit, never calls the build: no MJCF is parsed. On a miss the
 build callback assembles the spec, it is compiled once with its ``home`` keyframe, and the entry is
 written in the background with every file the compile read. The keyframe travels with the model
-(:class:`~assembler.mjcf.keyframe.Keyframe`), so an assembly built later (for its XML) carries
+(:class:`~assembler.compiler.keyframe.Keyframe`), so an assembly built later (for its XML) carries
 exactly the keyframe of the model that was handed out. An entry also keeps the assembly's emitted
 XML once it was asked for (:func:`compile_xml`), so a repeated ``get_xml`` neither builds nor
 compiles. The lookup itself (the store, a stored model, an assembly's key, the counts) is
@@ -28,13 +28,13 @@ from assembler.cache.meshes import default_mesh_store
 from assembler.cache.store import ModelStore
 from assembler.cache.store import wait_for_writes as wait_for_entries
 from assembler.compiler.compile import compile_and_emit, compile_home
+from assembler.compiler.keyframe import Keyframe
 from assembler.compiler.stored import counts as counts  # the lookup's names, still asked for here
 from assembler.compiler.stored import default_store as default_store
 from assembler.compiler.stored import entry_key as entry_key
 from assembler.compiler.stored import load_entry
 from assembler.compiler.stored import recent as _recent
 from assembler.files.inputs import note_inputs
-from assembler.mjcf.keyframe import Keyframe
 
 
 @dataclass(frozen=True)

@@ -34,8 +34,8 @@ from mjlab.actuator.actuator import ActuatorCfg
 from mjlab.entity import EntityArticulationInfoCfg, EntityCfg
 from mjlab.sensor import ContactSensorCfg
 
+from assembler.compiler.keyframe import HOME_KEY
 from assembler.errors import AssemblerError, Problem
-from assembler.mjcf.keyframe import HOME_KEY
 from assembler.mjlab.collisions import Collisions, collisions
 from assembler.mjlab.task_parts import TaskParts, task_parts
 from assembler.models import RobotModel

@@ -26,8 +26,8 @@ import numpy as np
 from mjlab.sensor import ContactMatch, ContactSensorCfg
 from numpy.typing import NDArray
 
+from assembler.compiler.keyframe import HOME_KEY
 from assembler.errors import AssemblerError, Problem
-from assembler.mjcf.keyframe import HOME_KEY
 from assembler.models import RobotModel
 
 BODY = mujoco.mjtObj.mjOBJ_BODY

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 
 import mujoco
 
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP
+from assembler.mjcf import COLLISION_GROUP
 
 
 def colour_collision_geoms(mjspec: mujoco.MjSpec, rgba: Sequence[float]) -> None:

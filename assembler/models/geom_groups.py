@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import mujoco
 
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUPS
+from assembler.mjcf import COLLISION_GROUP, VISUAL_GROUPS
 from assembler.models import PartModel
 
 

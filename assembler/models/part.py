@@ -21,8 +21,7 @@ from assembler.cache.build_inputs import JointEdit, PartInputs
 from assembler.compiler.compile import compile_home
 from assembler.errors import AssemblerWarning, Location, MissingPackageError, MjcfError, Problem, SpecError
 from assembler.files.paths import display_path, locate_model_file
-from assembler.mjcf import census, compose
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
+from assembler.mjcf import COLLISION_GROUP, VISUAL_GROUP, census, compose
 from assembler.mjcf.joints import set_joint_attribute_value
 from assembler.mjcf.source import MjcfSource, load_mjcf
 from assembler.models.actuator_table import ActuatorRecord

@@ -19,13 +19,13 @@ import numpy as np
 from assembler import compiler
 from assembler.cache.build_inputs import BuildInputs, JointEdit
 from assembler.compiler.compile import compile_and_emit, compile_home
+from assembler.compiler.keyframe import Keyframe
 from assembler.compiler.service import Assembly, CompiledModel, compile_model, compile_xml, entry_key
 from assembler.errors import AssemblerError, JointAttributeError, Problem, summarize_names
 from assembler.files.bundles import save_model
 from assembler.mjcf import census, compose
 from assembler.mjcf.census import Census
 from assembler.mjcf.joints import set_joint_attribute_value
-from assembler.mjcf.keyframe import Keyframe
 from assembler.models.bases import RobotBaseModel
 from assembler.models.joint_rules import JointValue
 from assembler.models.part import FloatArray, PartModel

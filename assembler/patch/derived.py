@@ -22,8 +22,8 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
+from assembler.compiler.keyframe import home_control
 from assembler.compiler.stored import default_store, load_entry
-from assembler.mjcf.keyframe import home_control
 
 
 @dataclass

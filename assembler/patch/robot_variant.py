@@ -43,10 +43,10 @@ from dataclasses import replace
 import mujoco
 
 from assembler.compiler.compile import compile_and_emit
+from assembler.compiler.keyframe import Keyframe
 from assembler.compiler.service import CompiledModel
 from assembler.compiler.stored import default_store, entry_key, load_entry
 from assembler.mjcf.emit import XmlText
-from assembler.mjcf.keyframe import Keyframe
 from assembler.models import RobotModel
 from assembler.patch.derived import ModelPatch, apply_patch, dampratio_rule, keep_patch, kept_model
 from assembler.patch.patchable import NotPatchable, model_patch

@@ -18,8 +18,8 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
+from assembler.compiler.keyframe import HOME_KEY, home_control
 from assembler.mjcf.emit import NotInText, XmlText, numbers
-from assembler.mjcf.keyframe import HOME_KEY, home_control
 from assembler.patch.derived import ModelPatch
 
 JOINT_ATTRIBUTES = {

@@ -25,7 +25,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUP
+from assembler.mjcf import COLLISION_GROUP, VISUAL_GROUP
 from assembler.urdf.document import Mimic, UrdfDocument
 
 MOVING = (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE)

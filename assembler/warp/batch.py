@@ -23,7 +23,7 @@ import mujoco
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.mjcf.keyframe import HOME_KEY
+from assembler.compiler.keyframe import HOME_KEY
 from assembler.models import RobotModel
 from assembler.registry.instances import assemble
 from assembler.spec.documents import Override, parse_overrides, parse_path

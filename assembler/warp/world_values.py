@@ -162,7 +162,7 @@ def nominal_fields(
 def home_controls(
     model: mujoco.MjModel, qpos: NDArray[np.float64], values: dict[str, NDArray[np.float64]]
 ) -> NDArray[np.float64]:
-    """Each world's home controls (``assembler.mjcf.keyframe.home_control``, in arrays): its home
+    """Each world's home controls (``assembler.compiler.keyframe.home_control``, in arrays): its home
     position for a position actuator on a joint (clipped to its control range), 0 for the others;
     ``values``: the worlds' own ``actuator_gainprm``, ``biasprm`` or ``ctrlrange`` where they vary."""
     n = len(qpos)

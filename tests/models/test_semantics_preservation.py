@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import assembler
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP
+from assembler.mjcf import COLLISION_GROUP
 from assembler.mjcf.installed_mujoco import mujoco_at_least
 from assembler.models.part import PartModel
 from tests.models.semantics_robots import CASES, CUBE_OBJ, SLEEVE_SKN, robot_mjcf

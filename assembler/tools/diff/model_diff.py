@@ -14,7 +14,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from assembler.mjcf.keyframe import HOME_KEY
+from assembler.compiler.keyframe import HOME_KEY
 
 Value = float | list[float] | None
 Properties = dict[str, dict[str, Value]]

@@ -13,7 +13,7 @@ import mujoco
 
 from assembler.checks.finding import Finding
 from assembler.checks.target import LintTarget
-from assembler.mjcf.keyframe import HOME_KEY
+from assembler.compiler.keyframe import HOME_KEY
 from assembler.spec.fieldpath import FieldPath
 
 LIMIT_TOLERANCE = 1e-6

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 
 from assembler.checks.finding import Finding
 from assembler.checks.target import LintTarget
-from assembler.mjcf.geom_group_numbers import COLLISION_GROUP, VISUAL_GROUPS
+from assembler.mjcf import COLLISION_GROUP, VISUAL_GROUPS
 from assembler.models.geom_groups import geoms_by_part
 from assembler.spec.fieldpath import FieldPath
 

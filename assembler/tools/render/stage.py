@@ -18,8 +18,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assembler.compiler.compile import compile_home
-from assembler.mjcf.geom_group_numbers import VISUAL_GROUPS
-from assembler.mjcf.keyframe import HOME_KEY
+from assembler.compiler.keyframe import HOME_KEY
+from assembler.mjcf import VISUAL_GROUPS
 from assembler.models import PartModel, RobotModel
 from assembler.models.geom_groups import PartGeoms, describe, geoms_by_part
 from assembler.tools.render.backend import RenderError
