@@ -58,11 +58,19 @@ def value_docstring(module: str, name: str) -> str | None:
                 return inspect.cleandoc(after.value.value)
             assigned = {n for statement in tree.body for n in _assigned_names(statement)}
             return ast.get_docstring(tree) if assigned == {name} else None
-        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
-            for alias in node.names:
+        for imported in _imports_of(node):
+            for alias in imported.names:
                 if (alias.asname or alias.name) == name:
-                    return value_docstring(node.module, alias.name)
+                    return value_docstring(str(imported.module), alias.name)
     return None
+
+
+def _imports_of(node: ast.stmt) -> list[ast.ImportFrom]:
+    """The absolute ``from X import`` statements ``node`` is, or (an ``if TYPE_CHECKING:`` block of a
+    package that gives its names on first use, ``assembler.models``) holds."""
+    if isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
+        return [n for n in node.body if isinstance(n, ast.ImportFrom) and n.module and n.level == 0]
+    return [node] if isinstance(node, ast.ImportFrom) and node.module and node.level == 0 else []
 
 
 def documented(module: str, name: str) -> tuple[str, str | None]:

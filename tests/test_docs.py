@@ -4,7 +4,6 @@ the README and of docs/ leads somewhere."""
 
 from __future__ import annotations
 
-import ast
 import importlib.util
 import inspect
 import re
@@ -16,6 +15,7 @@ from types import ModuleType
 import pytest
 
 import assembler
+from tests.facades import type_checking_imports
 
 ROOT = Path(__file__).parent.parent
 README = ROOT / "README.md"
@@ -26,21 +26,6 @@ LINKED = [README, *PAGES]
 # ----- the API, declared once -------------------------------------------------------------------------
 
 
-def _type_checking_imports() -> list[tuple[str, str, str | None]]:
-    """(module, name, alias) of each import under ``if TYPE_CHECKING:`` in ``assembler/__init__.py``."""
-    tree = ast.parse((ROOT / "assembler" / "__init__.py").read_text())
-    (block,) = [
-        node
-        for node in tree.body
-        if isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING"
-    ]
-    imports = []
-    for node in block.body:
-        assert isinstance(node, ast.ImportFrom) and node.module, ast.unparse(node)
-        imports += [(node.module, alias.name, alias.asname) for alias in node.names]
-    return imports
-
-
 def test_all_is_the_api_table_each_name_once() -> None:
     declared = [name for names in assembler.API.values() for name in names]
     assert assembler.__all__ == declared
@@ -48,7 +33,7 @@ def test_all_is_the_api_table_each_name_once() -> None:
 
 
 def test_what_type_checkers_read_is_the_api_table() -> None:
-    imports = _type_checking_imports()
+    imports = type_checking_imports(ROOT / "assembler" / "__init__.py")
     assert [(module, name) for module, name, _ in imports if _ != name] == []  # each `X as X`: re-exported
     assert sorted((module, name) for module, name, _ in imports) == sorted(
         (module, name) for module, names in assembler.API.items() for name in names

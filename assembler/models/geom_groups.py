@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import mujoco
 
 from assembler.mjcf import COLLISION_GROUP, VISUAL_GROUPS
-from assembler.models import PartModel
+from assembler.models.part import PartModel
 
 
 @dataclass(frozen=True)

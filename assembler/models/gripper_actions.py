@@ -10,11 +10,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
-from assembler.spec.schema.gripper_actions import GripperActions
+if TYPE_CHECKING:  # the spec's type only: a recorded gripper's map is rebuilt without the schema
+    from assembler.spec.schema.gripper_actions import GripperActions
 
 FloatArray = NDArray[np.float64]
 

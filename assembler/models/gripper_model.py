@@ -15,12 +15,12 @@ from assembler.mjcf.source import MjcfSource, subtree_source
 from assembler.models.gripper_actions import ActionMap
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
-from assembler.models.registering import Registry
+from assembler.models.registering import REGISTRIES, Registry
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import GripperSpec
 from assembler.spec.schema.gripper import ROBOSUITE_SENSORS, ROBOSUITE_SITES
 
-REGISTERED_GRIPPERS: Registry[GripperModel] = Registry("gripper")
+REGISTERED_GRIPPERS: Registry[GripperModel] = REGISTRIES["gripper"]
 """Every registered gripper class by name."""
 
 

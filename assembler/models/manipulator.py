@@ -254,3 +254,13 @@ class LeggedModel(ManipulatorModel):
     def feet(self) -> list[str]:
         """The bodies the robot stands on (prefixed)."""
         return [self.naming_prefix + foot for foot in self.spec.feet]
+
+
+MORPHOLOGY_CLASSES: dict[str, type[RobotModel]] = {
+    "manipulator": ManipulatorModel,
+    "legged_manipulator": LeggedManipulatorModel,
+    "humanoid": HumanoidModel,
+    "humanoid_upper_body": HumanoidUpperBodyModel,
+    "legged": LeggedModel,
+}
+"""The model class each robot spec's ``morphology`` becomes a subclass of."""

@@ -218,3 +218,9 @@ class RegisteringMeta(type):
         if namespace.get("in_registry", True):
             cls.registry.register(cls)
         return cls
+
+
+REGISTRIES: dict[str, Registry[Any]] = {family: Registry(family) for family in ("robot", "base", "gripper")}
+"""Each family's registry. They live here, apart from the classes they hold, so that reading them
+(robosuite's bridge does, at every import) imports no model class and no schema: each family's
+class module names its own table (``REGISTERED_ROBOTS``...)."""

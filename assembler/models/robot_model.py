@@ -32,11 +32,11 @@ from assembler.models.part import FloatArray, PartModel
 from assembler.models.placement import PlacedPart
 from assembler.models.preparation import SETTABLE_JOINT_ATTRIBUTES, PreparedPart
 from assembler.models.provenance import API
-from assembler.models.registering import Registry
+from assembler.models.registering import REGISTRIES, Registry
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import RobotSpec
 
-REGISTERED_ROBOTS: Registry[RobotModel] = Registry("robot")
+REGISTERED_ROBOTS: Registry[RobotModel] = REGISTRIES["robot"]
 """Every registered robot class by name, in registration order."""
 
 

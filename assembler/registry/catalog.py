@@ -15,7 +15,7 @@ from typing import Any, TypeVar
 import yaml
 
 from assembler.errors import AssemblerError, Problem, RegistryError
-from assembler.files.paths import display_path, is_file, shipped_specs_dir
+from assembler.files.paths import is_file, shipped_specs_dir
 from assembler.models import (
     BASE_TYPE_CLASSES,
     MORPHOLOGY_CLASSES,
@@ -25,7 +25,7 @@ from assembler.models import (
     source_of,
 )
 from assembler.models.motor_table import MOTORS
-from assembler.registry import packs, shipped
+from assembler.registry import shipped
 from assembler.registry.same_spec import same_spec, shipped_note
 from assembler.spec.documents import (
     LoadedSpec,
@@ -161,36 +161,6 @@ def load_shipped_specs() -> list[type[PartModel]]:
     ]
 
 
-def _register_shipped_specs() -> None:
-    """Register each shipped name and each installed pack's (:mod:`assembler.registry.packs`) with
-    its file, read on first lookup; a folder that cannot be indexed plainly is read now (see
-    :mod:`assembler.registry.shipped`). A name two sources define is held as a conflict."""
-    installed = packs.installed_packs()
-    sources = [("the shipped specs", shipped_specs_dir())]
-    sources += [(f"{pack.label} ({pack.name})", pack.folder) for pack in installed]
-    pack_motors = [file for pack in installed for file in shipped.motor_files(pack.folder)]
-    if pack_motors:  # few and small; a pack's part may name them, and motors have no lazy index
-        register_specs(*pack_motors)
-    files: dict[tuple[str, str], Path] = {}
-    defined: dict[tuple[str, str], list[str]] = {}
-    for label, folder in sources:
-        if not folder.is_dir():
-            continue
-        found = shipped.scan(folder)
-        if found is None:
-            register_specs(folder)
-            continue
-        for key, file in found.items():
-            files.setdefault(key, file)
-            defined.setdefault(key, []).append(f"{label}: {display_path(file)}")
-    conflicts = {key: places for key, places in defined.items() if len(places) > 1}
-    for key in conflicts:
-        files.pop(key)
-    index = shipped.ShippedIndex(files, lambda paths: register_specs(*paths), conflicts)
-    for table in REGISTRIES.values():
-        table.unmade = index
-
-
 def add_spec_folders(folders: Iterable[str | Path]) -> list[type[PartModel]]:
     """Register the user's spec folders (the CLI's ``--specs`` flag)."""
     folders = list(folders)
@@ -298,4 +268,4 @@ def with_overrides(cls: type[P], overrides: Overrides, label: str = "override ")
     return type(cls.__name__, (cls,), namespace)
 
 
-_register_shipped_specs()  # the registries always hold the shipped names once the catalog is in use
+shipped.hold_shipped_names()  # the registries always hold the shipped names once the catalog is in use

@@ -12,10 +12,15 @@ listing, robosuite's bridge, a duplicate check against every name) loads the res
 The index is a scan of each file's top-level ``name:`` and ``kind:`` lines, not YAML: a file the
 scan cannot read plainly (no such line, a name twice, an unknown kind, a link out of the folder)
 makes the whole folder load at import as before, so its problem is reported as before.
+
+Holding the names imports neither the model classes nor the schema (the catalog, which reads specs,
+is imported when a name is first made): robosuite's bridge holds them at every import, and a warm
+``robosuite.make`` of recorded parts never makes one.
 """
 
 from __future__ import annotations
 
+import importlib
 import re
 import threading
 from collections.abc import Callable, Sequence
@@ -23,7 +28,10 @@ from pathlib import Path
 from typing import Any
 
 from assembler.errors import Problem, RegistryError
-from assembler.spec.spec_files import spec_files
+from assembler.files.paths import display_path, shipped_specs_dir
+from assembler.models.registering import REGISTRIES
+from assembler.registry import packs
+from assembler.spec.part_arguments import spec_files
 
 PART_KINDS = ("robot", "base", "gripper")
 """The spec kinds that are registered parts (a scene or an experiment in the folder is neither)."""
@@ -158,3 +166,51 @@ class ShippedIndex:
         assert isinstance(state, dict)
         self.files.clear()
         self.files.update(state)
+
+
+def _catalog() -> Any:
+    """The catalog, which reads and registers spec files (the schema with it): imported when a held
+    name is first made, or a folder cannot be held by name."""
+    return importlib.import_module("assembler.registry.catalog")
+
+
+def _register_specs(paths: Sequence[Path]) -> list[Any]:
+    return _catalog().register_specs(*paths)  # type: ignore[no-any-return]
+
+
+_held = False
+
+
+def hold_shipped_names() -> None:
+    """Register each shipped name and each installed pack's (:mod:`assembler.registry.packs`) with
+    its file, read on first lookup; a folder that cannot be indexed plainly is read now (see the
+    module). A name two sources define is held as a conflict. Once per process: the catalog calls it
+    as it loads, and robosuite's bridge without loading it."""
+    global _held
+    if _held:
+        return
+    _held = True
+    installed = packs.installed_packs()
+    sources = [("the shipped specs", shipped_specs_dir())]
+    sources += [(f"{pack.label} ({pack.name})", pack.folder) for pack in installed]
+    pack_motors = [file for pack in installed for file in motor_files(pack.folder)]
+    if pack_motors:  # few and small; a pack's part may name them, and motors have no lazy index
+        _register_specs(pack_motors)
+    files: dict[tuple[str, str], Path] = {}
+    defined: dict[tuple[str, str], list[str]] = {}
+    for label, folder in sources:
+        if not folder.is_dir():
+            continue
+        found = scan(folder)
+        if found is None:
+            _register_specs([folder])
+            continue
+        for key, file in found.items():
+            files.setdefault(key, file)
+            defined.setdefault(key, []).append(f"{label}: {display_path(file)}")
+    conflicts = {key: places for key, places in defined.items() if len(places) > 1}
+    for key in conflicts:
+        files.pop(key)
+    index = ShippedIndex(files, _register_specs, conflicts)
+    for table in REGISTRIES.values():
+        table.unmade = index

@@ -12,18 +12,18 @@ from __future__ import annotations
 
 import mujoco
 
-from assembler.models import ManipulatorModel
+from assembler import models
 from assembler.robosuite.conventions import arm_center_site
 from assembler.spec.fieldpath import FieldPath
 
 
-def arms_without_center(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
+def arms_without_center(robot: models.ManipulatorModel, mjspec: mujoco.MjSpec) -> list[str]:
     """The arms (with joints) whose ``{arm}_center`` site ``mjspec``, the robot's part spec, lacks."""
     groups = robot.arm_joints
     return [arm for arm in robot.arms if groups[arm] and mjspec.site(arm_center_site(arm)) is None]
 
 
-def add_arm_centers(robot: ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
+def add_arm_centers(robot: models.ManipulatorModel, mjspec: mujoco.MjSpec) -> None:
     """Give ``mjspec`` robosuite's ``{arm}_center`` site for every arm that has none (see the module)."""
     arms = arms_without_center(robot, mjspec)
     for arm in arms:

@@ -18,13 +18,11 @@ import warnings
 from collections.abc import Callable
 from pathlib import Path
 
+from assembler import models
 from assembler.errors import AssemblerError, AssemblerWarning, RegistryError
-from assembler.models import ManipulatorModel, PartModel
-from assembler.registry.catalog import register_specs, with_overrides
 from assembler.robosuite.conventions import offered
 from assembler.robosuite.registries import install
 from assembler.spec.part_arguments import DEFAULT
-from assembler.worlds.experiment import build_experiment, read_experiment
 
 SPECS_VARIABLE = "ASSEMBLER_ROBOSUITE_SPECS"
 EXPERIMENT_VARIABLE = "ASSEMBLER_ROBOSUITE_EXPERIMENT"
@@ -33,16 +31,21 @@ EXPERIMENT_VARIABLE = "ASSEMBLER_ROBOSUITE_EXPERIMENT"
 def register(*paths: str | Path, replace_robosuite: bool = False) -> list[str]:
     """Register the specs in ``paths`` (files and folders) with the assembler and robosuite: all or
     none. A name robosuite uses itself is an error unless ``replace_robosuite``; returns the names."""
+    from assembler.registry.catalog import register_specs
+
     classes = register_specs(*paths)
     return install([cls for cls in classes if offered(cls)], replace=replace_robosuite)
 
 
-def experiment_robots(path: str | Path) -> list[type[ManipulatorModel]]:
+def experiment_robots(path: str | Path) -> list[type[models.ManipulatorModel]]:
     """The robots of an experiment file, each a class with the experiment's overrides and parts; every
     problem of the file at once, at its line."""
+    from assembler.registry.catalog import with_overrides
+    from assembler.worlds.experiment import build_experiment, read_experiment
+
     loaded = read_experiment(path)
     built = build_experiment(loaded)
-    classes: dict[str, type[ManipulatorModel]] = {}
+    classes: dict[str, type[models.ManipulatorModel]] = {}
     for index, (entry, robot) in enumerate(zip(loaded.spec.robots, built.robots, strict=True)):
         parts: dict[str, object] = {}
         if entry.base != DEFAULT:
@@ -61,7 +64,7 @@ def experiment_robots(path: str | Path) -> list[type[ManipulatorModel]]:
             raise RegistryError(
                 f"{label} robot {name} appears twice with different settings; robosuite has one {name}"
             )
-        if not isinstance(robot, ManipulatorModel):
+        if not isinstance(robot, models.ManipulatorModel):
             raise RegistryError(
                 f"{label} robot {name} has no arms; robosuite's environments take robots with arms"
             )
@@ -72,7 +75,7 @@ def experiment_robots(path: str | Path) -> list[type[ManipulatorModel]]:
 def register_experiment(path: str | Path) -> list[str]:
     """Register an experiment file's robots with robosuite: the file is the user's explicit choice, so
     each replaces the class robosuite had under its name (robosuite's own is logged as replaced)."""
-    robots: list[type[PartModel]] = list(experiment_robots(path))
+    robots: list[type[models.PartModel]] = list(experiment_robots(path))
     return install(robots, replace=True, replace_ours=True)
 
 

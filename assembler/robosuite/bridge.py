@@ -20,10 +20,10 @@ except ImportError as error:  # pragma: no cover - depends on the installation
         f"assembler.robosuite needs robosuite ({error}); install it with: pip install -e '.[robosuite]'"
     ) from None
 
-import assembler.registry.catalog  # noqa: F401  (registers the shipped specs on first import)
+from assembler import models
 from assembler.errors import Problem, RegistryError, did_you_mean
-from assembler.models import REGISTRIES, PartModel
-from assembler.models.registering import Registry
+from assembler.models.registering import REGISTRIES, Registry
+from assembler.registry.shipped import hold_shipped_names
 from assembler.robosuite import compat
 from assembler.robosuite.autoload import register, register_experiment, register_from_environment
 from assembler.robosuite.controllers import CONFIGS
@@ -55,13 +55,13 @@ def _shipped() -> list[Installable]:
     return list(found.values())
 
 
-def _bases_first() -> list[tuple[str, Registry[PartModel]]]:
+def _bases_first() -> list[tuple[str, Registry[models.PartModel]]]:
     """The registries, bases first: a robot's base is read to record the robot (its type decides the
     robot's Robot type), so a base read before its own record is looked for is recorded too."""
     return sorted(REGISTRIES.items(), key=lambda item: item[0] != "base")
 
 
-def _enters_robosuite(cls: type[PartModel]) -> bool:
+def _enters_robosuite(cls: type[models.PartModel]) -> bool:
     if not offered(cls):
         return False
     try:
@@ -114,6 +114,7 @@ def registered() -> dict[str, list[str]]:
 
 compat.apply_all()  # before anything of robosuite runs: robosuite's statements newer MuJoCo breaks
 CONFIGS.install()
+hold_shipped_names()  # by name: a spec is read (the schema imported) only when its name is made
 install(_shipped())
 ENVIRONMENT_PROBLEMS: list[str] = register_from_environment()
 """What ``ASSEMBLER_ROBOSUITE_SPECS``/``_EXPERIMENT`` named that could not be registered, one line each

@@ -36,15 +36,14 @@ from assembler.robosuite.conventions import (
     GRIP_FRAMES,
     arm_center_site,
     driven_actuators,
-    driven_voltage_motors,
     grip_sensors,
     has_force_range,
     is_bridge_servo,
     offered,
 )
-from assembler.robosuite.parts import undriven_joints, why_undriven
+from assembler.robosuite.parts import driven_voltage_motors, undriven_joints, why_undriven
+from assembler.spec.expressions import ExpressionError
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema.expressions import ExpressionError
 
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR
 ACTUATOR = mujoco.mjtObj.mjOBJ_ACTUATOR

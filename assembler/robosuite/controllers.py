@@ -23,9 +23,10 @@ from typing import Any
 import robosuite
 from robosuite.controllers.composite import composite_controller_factory as factory
 
+from assembler import models
 from assembler.errors import SpecError
 from assembler.files.paths import confine, spec_homes
-from assembler.models import REGISTERED_BASES, ManipulatorModel
+from assembler.models.registering import REGISTRIES
 from assembler.robosuite.conventions import CONTROLLER, DRIVEN_GROUPS, base_in_robosuite, robot_type_name
 from assembler.robosuite.make_records import (
     Facts,
@@ -97,7 +98,7 @@ def robosuite_config_names() -> list[str]:
 
 
 def declared_config(
-    robot_class: type[ManipulatorModel], read: Origins | None = None
+    robot_class: type[models.ManipulatorModel], read: Origins | None = None
 ) -> dict[str, Any] | None:
     """The configuration the spec's ``robosuite.controller`` gives, flattened; None when it gives none.
     A JSON file it names goes into ``read`` with its (size, mtime_ns) before it is read."""
@@ -149,7 +150,7 @@ def declared_config(
         ) from None
 
 
-def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
+def default_config(robot_class: type[models.ManipulatorModel]) -> dict[str, Any]:
     """robosuite's configuration for the robot's arms, plus the other parts it has actuators for on
     the base robosuite stands it on (its default base, or its stand-in base) that its robosuite Robot
     class drives: a FixedBaseRobot drives arms only, and a composite controller for parts nobody
@@ -158,7 +159,7 @@ def default_config(robot_class: type[ManipulatorModel]) -> dict[str, Any]:
     driven = set(DRIVEN_GROUPS[robot_type]) | BASE_DRIVEN_BY.get(robot_type, set())
     robot = robot_class(idn=0)
     spec = robot_class.spec
-    robot.add_base(REGISTERED_BASES.lookup(base_in_robosuite(spec))(idn=0))
+    robot.add_base(REGISTRIES["base"].lookup(base_in_robosuite(spec))(idn=0))
     config = flattened(_robosuite_file(DEFAULT_BY_ARMS[robot.arm_type]))
     actuated = {
         "base": robot.base_actuators,
@@ -210,7 +211,7 @@ class ControllerConfigs:
         return config if config is not None else ROBOSUITES_LOADER(controller=None, robot=name)
 
     def _config(
-        self, robot_class: type[ManipulatorModel], robot: str, read: Origins | None = None
+        self, robot_class: type[models.ManipulatorModel], robot: str, read: Origins | None = None
     ) -> dict[str, Any] | None:
         """The configuration of a spec robot; None for robosuite's own (one of robosuite's names
         whose spec declares none). A JSON file it is read from goes into ``read``."""
@@ -225,10 +226,10 @@ class ControllerConfigs:
         """The configuration (:meth:`_config`) as a make record's values, with the files it depends on:
         the robot's and its base's specs and MJCF (a default configuration covers the base's
         actuators), and a JSON file it is read from."""
-        robot_class: type[ManipulatorModel] = spec_class_of(registered)
+        robot_class: type[models.ManipulatorModel] = spec_class_of(registered)
         read: Origins = {}
         config = self._config(robot_class, robot, read)
-        base = REGISTERED_BASES.lookup(base_in_robosuite(robot_class.spec))
+        base = REGISTRIES["base"].lookup(base_in_robosuite(robot_class.spec))
         return {"config": config}, {**origins_of([robot_class(idn=0), base(idn=0)]), **read}
 
     def install(self) -> None:

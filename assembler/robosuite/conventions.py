@@ -9,14 +9,16 @@ so lint and bridge cannot disagree.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import mujoco
 
-from assembler.models import REGISTERED_BASES, ManipulatorModel, PartModel
-from assembler.models.motor_joints import voltage_limits
-from assembler.models.motor_rules import Derived
+from assembler import models
+from assembler.models.registering import REGISTRIES
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema import RobotSpec
+
+if TYPE_CHECKING:  # a spec's type only: asking these questions of a recorded part imports no schema
+    from assembler.spec.schema import RobotSpec
 
 BY_BASE_TYPE: dict[str, str] = {
     "mount": "FixedBaseRobot",
@@ -96,7 +98,7 @@ def base_in_robosuite(spec: RobotSpec) -> str:
     return "NoActuationBase" if spec.morphology in LEGGED_MORPHOLOGIES else "NullMount"
 
 
-def robot_type_name(robot_class: type[ManipulatorModel]) -> str:
+def robot_type_name(robot_class: type[models.ManipulatorModel]) -> str:
     """robosuite's Robot class for ``robot_class`` (FixedBaseRobot, WheeledRobot or LeggedRobot, the
     only ones robosuite's environments accept): declared, else by morphology and base. The class
     decides which body parts get controllers (``DRIVEN_GROUPS``)."""
@@ -105,24 +107,15 @@ def robot_type_name(robot_class: type[ManipulatorModel]) -> str:
         return str(spec.robosuite.robot_type)
     if spec.morphology in LEGGED_MORPHOLOGIES:
         return "LeggedRobot"
-    base = REGISTERED_BASES.get(base_in_robosuite(spec))
+    base = REGISTRIES["base"].get(base_in_robosuite(spec))
     return BY_BASE_TYPE[base.spec.type] if base is not None else "FixedBaseRobot"
 
 
-def driven_actuators(robot: ManipulatorModel) -> list[str]:
+def driven_actuators(robot: models.ManipulatorModel) -> list[str]:
     """The robot's own actuators (prefixed, in group order) that robosuite's controllers drive."""
     groups = robot.actuator_groups()
     named = [name for group in DRIVEN_GROUPS[robot_type_name(type(robot))] for name in groups.get(group, [])]
     return [name for name in named if name.startswith(robot.naming_prefix)]
-
-
-def driven_voltage_motors(robot: ManipulatorModel) -> dict[str, Derived]:
-    """The actuators robosuite's controllers drive (unprefixed) that take volts (a ``motors:`` entry's
-    ``control: voltage``) -> the joint torque limit, ±(peak or stall torque)·N·η, of the motor each
-    becomes under ``robosuite.actuation: torque``."""
-    driven = {name.removeprefix(robot.naming_prefix) for name in driven_actuators(robot)}
-    limits = voltage_limits(robot.spec.motors, robot.actuator_table)
-    return {name: limit for name, limit in limits.items() if name in driven}
 
 
 def is_bridge_servo(model: mujoco.MjModel, actuator: int) -> bool:
@@ -141,10 +134,10 @@ def arm_center_site(arm: str) -> str:
     return f"{arm}_center"
 
 
-def offered(spec_class: type[PartModel]) -> bool:
+def offered(spec_class: type[models.PartModel]) -> bool:
     """Whether a spec class enters robosuite: every gripper and base; a robot unless its spec says
     ``robosuite.enabled: false`` or it has no arms (``morphology: legged``: robosuite's robots are
     manipulators). A question about the spec alone: asking it imports no robosuite."""
-    if not issubclass(spec_class, ManipulatorModel):
+    if not issubclass(spec_class, models.ManipulatorModel):
         return True
     return spec_class.spec.robosuite.enabled and bool(spec_class.spec.arms)

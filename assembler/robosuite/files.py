@@ -20,12 +20,12 @@ from xml.sax.saxutils import escape, unescape
 
 import mujoco
 
+from assembler import models
 from assembler.cache.content import PARTS, content_folder, recorded_text_file, text_file
 from assembler.cache.dependencies import asset_files
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.key import FORMAT, code_fingerprint, resolution_environment
 from assembler.errors import AssemblerWarning
-from assembler.models import PartModel
 from assembler.robosuite.lossless import lossless_xml
 
 NOTE = "<!-- assembler says: "
@@ -74,14 +74,16 @@ def kept_file(
 
 
 def recorded_file(
-    key: str, parts: Callable[[], list[PartModel]], build: Callable[[list[PartModel]], mujoco.MjSpec]
+    key: str,
+    parts: Callable[[], list[models.PartModel]],
+    build: Callable[[list[models.PartModel]], mujoco.MjSpec],
 ) -> str:
     """The part file kept under ``key`` (the :func:`file_key` of ``parts()``' inputs, from a make
     record), its notes said: served while its record is current, without ``parts()`` (which makes
     the parts: reads their specs); else made of them as :func:`robosuite_file` makes it."""
-    made: list[list[PartModel]] = []
+    made: list[list[models.PartModel]] = []
 
-    def got() -> list[PartModel]:
+    def got() -> list[models.PartModel]:
         if not made:
             made.append(parts())
         return made[0]
@@ -103,8 +105,28 @@ def recorded_file(
     return path
 
 
+def recorded_part_file(key: str, part: Callable[[], models.PartModel]) -> str:
+    """The file robosuite reads for the part ``part()`` makes alone, from the key a make record
+    holds: ``part()`` is called only when no file is kept under ``key``."""
+    return recorded_file(key, lambda: [part()], lambda parts: parts[0].part_mjspec())
+
+
+def recorded_assembly_file(
+    key: str, robot: Callable[[], models.RobotModel], world: Callable[[models.RobotModel], mujoco.MjSpec]
+) -> str:
+    """The file robosuite reads for the robot ``robot()`` makes, with its base and grippers, from
+    the key a make record holds: ``robot()`` and ``world`` (its assembly, checked for robosuite's
+    world) are called only when no file is kept under ``key``."""
+
+    def parts() -> list[models.PartModel]:
+        made = robot()
+        return [made, *made.models]
+
+    return recorded_file(key, parts, lambda parts: world(robot()))
+
+
 def robosuite_file(
-    inputs: object, kept: bool, parts: list[PartModel], build: Callable[[], mujoco.MjSpec]
+    inputs: object, kept: bool, parts: list[models.PartModel], build: Callable[[], mujoco.MjSpec]
 ) -> str:
     """The lossless file of ``build()`` (the spec of ``parts``: one part, or an assembly), made only
     when no kept file of ``inputs`` is current (``kept`` False: a hand-written class, made every
@@ -144,7 +166,7 @@ def say_notes(path: str) -> None:
             warnings.warn_explicit(*said[:1], AssemblerWarning, *said[1:])
 
 
-def _files_read(parts: list[PartModel]) -> Iterator[str]:
+def _files_read(parts: list[models.PartModel]) -> Iterator[str]:
     """Every file the text of ``parts`` depends on: each part's MJCF and includes, and the asset files
     its text names (which must still be there). Lazy: a part's MJCF is read only when iterated."""
     for part in parts:
@@ -152,7 +174,7 @@ def _files_read(parts: list[PartModel]) -> Iterator[str]:
         yield from asset_files(part.prepared_mjspec)
 
 
-def _read_earlier(parts: list[PartModel]) -> dict[str, tuple[int, int]]:
+def _read_earlier(parts: list[models.PartModel]) -> dict[str, tuple[int, int]]:
     """Each part's MJCF and includes with their (size, mtime_ns) when the part read them."""
     return {path: (size, mtime) for part in parts for path, size, mtime in part.source.files}
 

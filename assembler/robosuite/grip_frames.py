@@ -15,26 +15,26 @@ from __future__ import annotations
 
 import mujoco
 
-from assembler.models import GripperModel
+from assembler import models
 from assembler.robosuite.conventions import EEF, GRIP_CYLINDER, GRIP_SENSORS, GRIP_SITE, grip_sensors
 from assembler.spec.fieldpath import FieldPath
 
 FT_FRAME = "ft_frame"
 
 
-def _missing_sensors(gripper: GripperModel, mjspec: mujoco.MjSpec) -> list[str]:
+def _missing_sensors(gripper: models.GripperModel, mjspec: mujoco.MjSpec) -> list[str]:
     names = (name for _, name in grip_sensors(gripper.spec.important_sensors))
     return [name for name in names if mjspec.sensor(name) is None]
 
 
-def missing_grip_frames(gripper: GripperModel, mjspec: mujoco.MjSpec) -> list[str]:
+def missing_grip_frames(gripper: models.GripperModel, mjspec: mujoco.MjSpec) -> list[str]:
     """The names robosuite looks up that ``mjspec`` (the gripper's part spec) lacks."""
     missing = [] if mjspec.body(EEF) is not None else [f"body '{EEF}'"]
     missing += [f"site '{name}'" for name in (GRIP_SITE, GRIP_CYLINDER) if mjspec.site(name) is None]
     return missing + [f"sensor '{name}'" for name in _missing_sensors(gripper, mjspec)]
 
 
-def add_grip_frames(gripper: GripperModel, mjspec: mujoco.MjSpec) -> None:
+def add_grip_frames(gripper: models.GripperModel, mjspec: mujoco.MjSpec) -> None:
     """Give ``mjspec`` robosuite's ``eef`` body and grip sites where it has none (see the module)."""
     missing = missing_grip_frames(gripper, mjspec)
     if not missing:
@@ -67,7 +67,7 @@ def add_grip_frames(gripper: GripperModel, mjspec: mujoco.MjSpec) -> None:
     )
 
 
-def _add_sensors(gripper: GripperModel, mjspec: mujoco.MjSpec) -> None:
+def _add_sensors(gripper: models.GripperModel, mjspec: mujoco.MjSpec) -> None:
     """robosuite's force and torque sensors on a site ``ft_frame`` at the gripper's root body."""
     missing = _missing_sensors(gripper, mjspec)
     if not missing:

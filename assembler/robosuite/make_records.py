@@ -31,12 +31,13 @@ from typing import Any
 
 import mujoco
 
-from assembler.answers.request import part_origins
+from assembler import models
+from assembler.answers.records import Origin
 from assembler.cache.content import PARTS, content_folder, recorded_text_file
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.key import code_fingerprint, resolution_environment
 from assembler.files.cache_location import cache_disabled
-from assembler.models import REGISTRIES, PartModel
+from assembler.models.registering import REGISTRIES
 
 FORMAT = 1
 """Version of a record's contents and key; bump it when either changes."""
@@ -143,11 +144,19 @@ def recorded_facts(material: Mapping[str, Any], make: Callable[[], tuple[Facts, 
     return facts
 
 
-def origins_of(parts: Iterable[PartModel]) -> Origins:
+def spec_origins(spec_class: type[models.PartModel]) -> tuple[Origin, ...]:
+    """The spec files ``spec_class`` was made from (its parents' and motors' too), read only when a
+    record is made: a warm make, answered from records, imports no spec reader."""
+    from assembler.answers.request import part_origins
+
+    return part_origins(spec_class)
+
+
+def origins_of(parts: Iterable[models.PartModel]) -> Origins:
     """The files the values of ``parts`` were made from: each one's spec files (its parents' and
     its motors' too) and its MJCF with its includes, with their (size, mtime_ns) when read."""
     found: Origins = {}
     for part in parts:
-        found.update({origin.path: (origin.size, origin.mtime_ns) for origin in part_origins(type(part))})
+        found.update({origin.path: (origin.size, origin.mtime_ns) for origin in spec_origins(type(part))})
         found.update({path: (size, mtime) for path, size, mtime in part.source.files})
     return found

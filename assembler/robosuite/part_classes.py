@@ -13,17 +13,16 @@ from __future__ import annotations
 import dataclasses
 import inspect
 from collections.abc import Callable, Sequence
-from typing import Any, ClassVar
+from typing import Any, ClassVar, TypeVar
 
 import numpy as np
 from robosuite.models.bases import LegBaseModel, MobileBaseModel, MountModel, NullBaseModel
 from robosuite.models.grippers import GripperModel as RobosuiteGripper
 
+from assembler import models
 from assembler.errors import SpecError
-from assembler.models import GripperModel, PartModel, RobotBaseModel
-from assembler.models.gripper_actions import ActionMap
-from assembler.models.part import FloatArray
-from assembler.robosuite.files import file_key
+from assembler.models.gripper_actions import ActionMap, FloatArray
+from assembler.robosuite.files import file_key, recorded_part_file
 from assembler.robosuite.make_records import (
     Facts,
     Origins,
@@ -32,8 +31,9 @@ from assembler.robosuite.make_records import (
     spec_class_of,
     spec_file,
 )
-from assembler.robosuite.parts import part_file, recorded_part_file, robosuite_part
 from assembler.spec.fieldpath import FieldPath
+
+P = TypeVar("P", bound="models.PartModel")
 
 BASE_CLASSES: dict[str, type] = {
     "mount": MountModel,
@@ -55,7 +55,7 @@ _recorded: dict[tuple[str, str], type] = {}
 class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
     """A gripper spec as a robosuite gripper model (subclassed once per spec)."""
 
-    assembler_class: ClassVar[type[GripperModel] | None] = None
+    assembler_class: ClassVar[type[models.GripperModel] | None] = None
     """The assembler's class for the spec."""
 
     current_action: FloatArray
@@ -71,12 +71,12 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
         super().__init__(_robosuite_file(self, "gripper", idn), idn=idn)
 
     @property
-    def part(self) -> GripperModel:
+    def part(self) -> models.GripperModel:
         """Our gripper: its spec, actions and state (made on first use when the make record answered
         what robosuite reads)."""
-        made: GripperModel | None = self.__dict__.get("_part")
+        made: models.GripperModel | None = self.__dict__.get("_part")
         if made is None:
-            made = robosuite_part(spec_class_of(type(self)), self._part_idn)
+            made = _our_part(spec_class_of(type(self)), self._part_idn)
             if made.action_map is None and made.actuators:
                 actuators = ", ".join(name[len(made.naming_prefix) :] for name in made.actuators)
                 message = (
@@ -108,7 +108,7 @@ class SpecGripper(RobosuiteGripper):  # type: ignore[misc]
         }
         return facts, origins_of([part])
 
-    def _of_spec(self, name: str, read: Callable[[GripperModel], Any]) -> Any:
+    def _of_spec(self, name: str, read: Callable[[models.GripperModel], Any]) -> Any:
         """A value robosuite reads of the gripper: the make record's, else ``read`` of our part."""
         return self._facts[name] if self._facts is not None else read(self.part)
 
@@ -182,7 +182,16 @@ def _robosuite_file(made: SpecGripper | SpecBase, family: str, idn: int | str) -
         made._facts = recorded_facts(material, made._spec_facts)
         if made._facts["file"]:
             return recorded_part_file(made._facts["file"], lambda: made.part)
-    return part_file(made.part)
+    from assembler.robosuite import parts  # a class without a make record makes its part now
+
+    return parts.part_file(made.part)
+
+
+def _our_part(spec_class: type[P], idn: int | str) -> P:
+    """Our part for robosuite, made on first use: a make answered by its record makes none."""
+    from assembler.robosuite import parts
+
+    return parts.robosuite_part(spec_class, idn)
 
 
 def _plain(value: Any) -> Any:
@@ -203,7 +212,7 @@ def _arrays(recorded: dict[str, Any]) -> dict[str, Any]:
 class SpecBase:
     """What every base spec's robosuite class adds to robosuite's class for its type."""
 
-    assembler_class: ClassVar[type[RobotBaseModel] | None] = None
+    assembler_class: ClassVar[type[models.RobotBaseModel] | None] = None
     """The assembler's class for the spec."""
 
     _part_idn: int | str
@@ -216,11 +225,11 @@ class SpecBase:
         super().__init__(_robosuite_file(self, "base", idn), idn=idn)  # type: ignore[call-arg]
 
     @property
-    def part(self) -> RobotBaseModel:
+    def part(self) -> models.RobotBaseModel:
         """Our base (made on first use when the make record answered what robosuite reads)."""
-        made: RobotBaseModel | None = self.__dict__.get("_part")
+        made: models.RobotBaseModel | None = self.__dict__.get("_part")
         if made is None:
-            made = self.__dict__["_part"] = robosuite_part(spec_class_of(type(self)), self._part_idn)
+            made = self.__dict__["_part"] = _our_part(spec_class_of(type(self)), self._part_idn)
         return made
 
     def _spec_facts(self) -> tuple[Facts, Origins]:
@@ -236,7 +245,7 @@ class SpecBase:
         }
         return facts, origins_of([part])
 
-    def _of_spec(self, name: str, read: Callable[[RobotBaseModel], Any]) -> Any:
+    def _of_spec(self, name: str, read: Callable[[models.RobotBaseModel], Any]) -> Any:
         """A value robosuite reads of the base: the make record's, else ``read`` of our part."""
         return self._facts[name] if self._facts is not None else read(self.part)
 
@@ -261,14 +270,14 @@ class SpecBase:
         return np.array(self._of_spec("init_qpos", lambda part: part.spec.init_qpos) or [], dtype=float)
 
 
-def robosuite_class_of(spec_class: type[PartModel]) -> type:
+def robosuite_class_of(spec_class: type[models.PartModel]) -> type:
     """The robosuite class of a gripper or base spec class (made once, not yet in robosuite's registries)."""
     made = _classes.get(spec_class)
     if made is not None:
         return made
-    if issubclass(spec_class, GripperModel):
+    if issubclass(spec_class, models.GripperModel):
         family, base_type = "gripper", ""
-    elif issubclass(spec_class, RobotBaseModel):
+    elif issubclass(spec_class, models.RobotBaseModel):
         family, base_type = "base", spec_class.spec.type
     else:
         raise TypeError(f"robosuite_class_of: {spec_class.__name__} is neither a gripper nor a base")

@@ -13,7 +13,6 @@ text is the lossless emission, kept in the cache across processes (:mod:`.files`
 from __future__ import annotations
 
 import warnings
-from collections.abc import Callable
 from typing import TypeVar
 
 import mujoco
@@ -22,6 +21,8 @@ from assembler.errors import AssemblerWarning, SpecError
 from assembler.mjcf.census import weighed_by_other_groups
 from assembler.models import GripperModel, ManipulatorModel, PartModel, RobotModel
 from assembler.models.collision_colour import colour_collision_geoms
+from assembler.models.motor_joints import voltage_limits
+from assembler.models.motor_rules import Derived
 from assembler.robosuite.actuation import has_force_range, motorize, position_servos, torque_motors
 from assembler.robosuite.arm_centers import add_arm_centers
 from assembler.robosuite.conventions import (
@@ -29,10 +30,9 @@ from assembler.robosuite.conventions import (
     DRIVEN_GROUPS,
     INERTIA_GROUPS,
     driven_actuators,
-    driven_voltage_motors,
     robot_type_name,
 )
-from assembler.robosuite.files import recorded_file, robosuite_file
+from assembler.robosuite.files import robosuite_file
 from assembler.robosuite.geom_names import name_geoms_as_robosuite
 from assembler.robosuite.grip_frames import add_grip_frames
 from assembler.spec.fieldpath import FieldPath
@@ -144,30 +144,13 @@ def part_file(part: PartModel) -> str:
     return robosuite_file(inputs, inputs.spec_made, [part], part.part_mjspec)
 
 
-def recorded_part_file(key: str, part: Callable[[], PartModel]) -> str:
-    """:func:`part_file` of the part ``part()`` makes, from the key a make record holds: ``part()``
-    is called only when no file is kept under ``key``."""
-    return recorded_file(key, lambda: [part()], lambda parts: parts[0].part_mjspec())
-
-
-def recorded_assembly_file(key: str, robot: Callable[[], RobotModel]) -> str:
-    """:func:`assembly_file` of the robot ``robot()`` makes, from the key a make record holds:
-    ``robot()`` is called only when no file is kept under ``key``."""
-
-    def parts() -> list[PartModel]:
-        made = robot()
-        return [made, *made.models]
-
-    return recorded_file(key, parts, lambda parts: _world_checked(robot()))
-
-
 def assembly_file(robot: RobotModel) -> str:
     """The file robosuite reads for ``robot`` with its base and grippers (prefixed: our assembly)."""
     inputs = robot.build_inputs()
-    return robosuite_file(inputs, inputs.cacheable, [robot, *robot.models], lambda: _world_checked(robot))
+    return robosuite_file(inputs, inputs.cacheable, [robot, *robot.models], lambda: world_checked(robot))
 
 
-def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
+def world_checked(robot: RobotModel) -> mujoco.MjSpec:
     """The robot's assembly, said where robosuite's world will weigh some body differently."""
     mjspec = robot.build_mjspec()
     bodies = weighed_by_other_groups(mjspec, INERTIA_GROUPS)
@@ -181,3 +164,12 @@ def _world_checked(robot: RobotModel) -> mujoco.MjSpec:
             stacklevel=2,
         )
     return mjspec
+
+
+def driven_voltage_motors(robot: ManipulatorModel) -> dict[str, Derived]:
+    """The actuators robosuite's controllers drive (unprefixed) that take volts (a ``motors:`` entry's
+    ``control: voltage``) -> the joint torque limit, ±(peak or stall torque)·N·η, of the motor each
+    becomes under ``robosuite.actuation: torque``."""
+    driven = {name.removeprefix(robot.naming_prefix) for name in driven_actuators(robot)}
+    limits = voltage_limits(robot.spec.motors, robot.actuator_table)
+    return {name: limit for name, limit in limits.items() if name in driven}

@@ -11,8 +11,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from assembler.spec.schema.expressions import evaluate_expression
-from assembler.spec.schema.robot import Offset3
+from assembler.spec.expressions import evaluate_expression
+
+Offset3 = tuple[float | str, float | str, float | str]
+"""An arena offset as a spec writes it (``base_xpos_offset``): numbers, or expressions of the table's
+size, already validated."""
 
 DEFAULT_OFFSETS: dict[str, dict[str, Offset3]] = {
     "single": {

@@ -27,22 +27,15 @@ from typing import Any
 
 import mujoco
 
-from assembler.answers.request import part_origins
+from assembler import models
 from assembler.cache.content import PARTS, content_folder, recorded_text_file
 from assembler.cache.file_state import buffer_digest
 from assembler.cache.key import code_fingerprint, resolution_environment
 from assembler.errors import RegistryError
 from assembler.files.cache_location import cache_disabled
-from assembler.models import (
-    REGISTERED_BASES,
-    REGISTRIES,
-    GripperModel,
-    ManipulatorModel,
-    PartModel,
-    RobotBaseModel,
-)
+from assembler.models.registering import REGISTRIES
 from assembler.robosuite.conventions import base_in_robosuite, offered, robot_type_name
-from assembler.robosuite.make_records import held_file, shipped_class
+from assembler.robosuite.make_records import held_file, shipped_class, spec_origins
 from assembler.robosuite.robot_class import check_offsets
 
 FORMAT = 1
@@ -94,24 +87,24 @@ class Registration:
             raise ValueError(f"not a registration record: {error}") from None
 
 
-def family_of(spec_class: type[PartModel]) -> str:
+def family_of(spec_class: type[models.PartModel]) -> str:
     """robot, gripper or base: robosuite's table for ``spec_class``."""
-    if issubclass(spec_class, ManipulatorModel):
+    if issubclass(spec_class, models.ManipulatorModel):
         return "robot"
-    if issubclass(spec_class, GripperModel):
+    if issubclass(spec_class, models.GripperModel):
         return "gripper"
-    if issubclass(spec_class, RobotBaseModel):
+    if issubclass(spec_class, models.RobotBaseModel):
         return "base"
     raise RegistryError(f"{spec_class.__name__}: robosuite takes robots with arms, grippers and bases only")
 
 
-def registration_of(spec_class: type[PartModel]) -> Registration:
+def registration_of(spec_class: type[models.PartModel]) -> Registration:
     """The registration of a made spec class (its spec read); a robot whose ``base_xpos_offset``
     robosuite cannot read raises its spec error here, as making its robosuite class does."""
     family = family_of(spec_class)
     spec: Any = spec_class.spec
     if family == "robot":
-        assert issubclass(spec_class, ManipulatorModel)
+        assert issubclass(spec_class, models.ManipulatorModel)
         check_offsets(spec_class)
         return Registration(
             family, spec_class.__name__, offered(spec_class), tuple(spec.arms), robot_type_name(spec_class)
@@ -126,13 +119,13 @@ class _Unrecorded(Exception):
     class is none robosuite takes."""
 
 
-def _origins(spec_class: type[PartModel]) -> list[tuple[str, int, int]]:
+def _origins(spec_class: type[models.PartModel]) -> list[tuple[str, int, int]]:
     """The files the registration of ``spec_class`` depends on, with their (size, mtime_ns) when read."""
     classes = [spec_class]
-    if issubclass(spec_class, ManipulatorModel):  # its base's type decides its Robot type
-        base = REGISTERED_BASES.get(base_in_robosuite(spec_class.spec))
+    if issubclass(spec_class, models.ManipulatorModel):  # its base's type decides its Robot type
+        base = REGISTRIES["base"].get(base_in_robosuite(spec_class.spec))
         classes += [base] if base is not None else []
-    return [(origin.path, origin.size, origin.mtime_ns) for cls in classes for origin in part_origins(cls)]
+    return [(origin.path, origin.size, origin.mtime_ns) for cls in classes for origin in spec_origins(cls)]
 
 
 def recorded(family: str, name: str) -> Registration | None:
@@ -143,13 +136,13 @@ def recorded(family: str, name: str) -> Registration | None:
     if file is None or cache_disabled():
         REGISTRIES[family].get(name)  # a lookup makes it (or says what is wrong with it)
         return None
-    made: list[type[PartModel]] = []
+    made: list[type[models.PartModel]] = []
 
     def read() -> Iterator[str]:  # iterated only on a miss: the spec is read then
         spec_class = shipped_class(family, name, lookup=False)
-        if spec_class is None or not part_origins(spec_class):
+        if spec_class is None or not spec_origins(spec_class):
             raise _Unrecorded
-        if issubclass(spec_class, ManipulatorModel):  # its base, read for its type, is recorded too
+        if issubclass(spec_class, models.ManipulatorModel):  # its base, read for its type, is recorded too
             recorded("base", base_in_robosuite(spec_class.spec))
         made.append(spec_class)
         yield from (path for path, _, _ in _origins(spec_class))
@@ -204,8 +197,8 @@ class SpecClassOf:
     def __set_name__(self, owner: type, attribute: str) -> None:
         self.owner = owner
 
-    def __get__(self, instance: object, owner: type | None = None) -> type[PartModel]:
-        spec_class: type[PartModel] = shipped_class(self.family, self.name)
+    def __get__(self, instance: object, owner: type | None = None) -> type[models.PartModel]:
+        spec_class: type[models.PartModel] = shipped_class(self.family, self.name)
         if self.owner is not None:
             setattr(self.owner, "assembler_class", spec_class)  # noqa: B010 (looked up once)
         return spec_class

@@ -15,7 +15,7 @@ import inspect
 import logging
 from collections.abc import Iterable, MutableMapping
 from types import ModuleType
-from typing import Any
+from typing import Any, TypeAlias
 
 import robosuite.models.bases as robosuite_bases
 import robosuite.models.grippers as robosuite_grippers
@@ -24,8 +24,9 @@ import robosuite.robots as robosuite_robot_types
 from robosuite.models.robots.robot_model import REGISTERED_ROBOTS
 from robosuite.robots import ROBOT_CLASS_MAPPING
 
+from assembler import models
 from assembler.errors import Problem, RegistryError
-from assembler.models import REGISTRIES, ManipulatorModel, PartModel
+from assembler.models.registering import REGISTRIES
 from assembler.robosuite.controllers import CONFIGS
 from assembler.robosuite.conventions import robot_type_name
 from assembler.robosuite.part_classes import recorded_class, robosuite_class_of
@@ -49,7 +50,7 @@ NULL_GRIPPER = "NullGripper"
 _replaced: list[str] = []
 
 
-Installable = type[PartModel] | Registration
+Installable: TypeAlias = "type[models.PartModel] | Registration"  # a string: read by type checkers only
 """A spec class, or the registration record of a shipped spec not read yet."""
 
 
@@ -59,7 +60,7 @@ def _family_and_name(item: Installable) -> tuple[str, str]:
     return family_of(item), item.__name__
 
 
-def _spec_class(item: Installable) -> type[PartModel]:
+def _spec_class(item: Installable) -> type[models.PartModel]:
     """The spec class of ``item`` (a registration's is looked up: its spec read)."""
     if isinstance(item, Registration):
         return REGISTRIES[item.family].lookup(item.name)
@@ -79,7 +80,7 @@ def robosuite_has(family: str, name: str) -> bool:
     return existing is not None and existing.__module__.startswith(("robosuite.", "robosuite_models."))
 
 
-def ours(existing: type | None) -> type[PartModel] | None:
+def ours(existing: type | None) -> type[models.PartModel] | None:
     """The spec class behind a registered robosuite class of ours, or None (read, when it was
     installed from its registration record)."""
     return getattr(existing, "assembler_class", None)
@@ -96,7 +97,7 @@ def _registration(existing: type | None) -> Registration | None:
     return found if isinstance(found, Registration) else None
 
 
-def _same_spec(registered: type[PartModel] | None, spec_class: type[PartModel]) -> bool:
+def _same_spec(registered: type[models.PartModel] | None, spec_class: type[models.PartModel]) -> bool:
     """Whether ``registered`` is ``spec_class``, or the same spec registered again (a folder given both
     in ``ASSEMBLER_ROBOSUITE_SPECS`` and to ``register``): registering it again changes nothing."""
     return registered is spec_class or (registered is not None and registered.spec == spec_class.spec)
@@ -130,7 +131,7 @@ def _conflict(item: Installable, replace: bool, replace_ours: bool) -> Problem |
 def _robosuite_class(item: Installable) -> type:
     """robosuite's class for ``item``: a registration's stands for its spec class until it is used."""
     if not isinstance(item, Registration):
-        return robot_class(item) if issubclass(item, ManipulatorModel) else robosuite_class_of(item)
+        return robot_class(item) if issubclass(item, models.ManipulatorModel) else robosuite_class_of(item)
     stand_in = SpecClassOf(item.family, item.name)
     if item.family == "robot":
         made = robosuite_robot(item.name, item.arms, stand_in)

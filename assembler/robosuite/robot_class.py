@@ -27,19 +27,20 @@ import warnings
 from collections.abc import Callable, Sequence
 from typing import Any, ClassVar, TypeVar
 
+import mujoco
 import numpy as np
+from numpy.typing import NDArray
 from robosuite.models.base import MujocoXML
 from robosuite.models.bases import RobotBaseModel as RobosuiteBase
 from robosuite.models.grippers import GripperModel as RobosuiteGripper
 from robosuite.models.robots.manipulators.manipulator_model import ManipulatorModel as RobosuiteManipulator
 from robosuite.models.robots.robot_model import RobotModelMeta
 
+from assembler import models
 from assembler.errors import AssemblerError, AssemblerWarning, SpecError
-from assembler.models import REGISTERED_BASES, REGISTERED_GRIPPERS, ManipulatorModel, PartModel
-from assembler.models.part import FloatArray
-from assembler.models.registering import Registry
+from assembler.models.registering import REGISTRIES, Registry
 from assembler.robosuite.conventions import base_in_robosuite
-from assembler.robosuite.files import file_key
+from assembler.robosuite.files import file_key, recorded_assembly_file, recorded_part_file
 from assembler.robosuite.make_records import (
     Facts,
     Origins,
@@ -48,19 +49,13 @@ from assembler.robosuite.make_records import (
     spec_class_of,
     spec_file,
 )
-from assembler.robosuite.parts import (
-    assembly_file,
-    part_file,
-    recorded_assembly_file,
-    recorded_part_file,
-    robosuite_part,
-)
 from assembler.robosuite.placement import arena_offsets, in_robosuites_shape, offsets
 from assembler.robosuite.same_names import check_same_names
+from assembler.spec.expressions import ExpressionError
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.schema.expressions import ExpressionError
 
-P = TypeVar("P", bound=PartModel)
+P = TypeVar("P", bound="models.PartModel")
+FloatArray = NDArray[np.float64]
 
 GROUPS = ("arm", "base", "torso", "head", "legs")
 """robosuite's joint and actuator groups (our parts name the arms' ``arm_joints``)."""
@@ -84,7 +79,7 @@ class QuietMeta(RobotModelMeta):  # type: ignore[misc]
 class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc]
     """A robot spec as a robosuite robot model (subclassed once per spec by :func:`robot_class`)."""
 
-    assembler_class: ClassVar[type[ManipulatorModel] | None] = None
+    assembler_class: ClassVar[type[models.ManipulatorModel] | None] = None
     """The assembler's class for the spec."""
 
     arms: ClassVar[list[str]] = []
@@ -109,15 +104,21 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
             if self._facts["file"]:
                 super().__init__(recorded_part_file(self._facts["file"], lambda: self.assembly), idn=idn)
                 return
-        super().__init__(part_file(self.assembly), idn=idn)
+        from assembler.robosuite import parts  # a class without a make record makes its part now
+
+        super().__init__(parts.part_file(self.assembly), idn=idn)
 
     @property
-    def assembly(self) -> ManipulatorModel:
+    def assembly(self) -> models.ManipulatorModel:
         """Our robot, base and grippers, built the assembler's way (made on first use when the make
         record answered what robosuite reads)."""
-        made: ManipulatorModel | None = self.__dict__.get("_assembly")
+        made: models.ManipulatorModel | None = self.__dict__.get("_assembly")
         if made is None:
-            made = self.__dict__["_assembly"] = robosuite_part(spec_class_of(type(self)), self._robot_idn)
+            # made on first use: a make answered by its record makes none
+            from assembler.robosuite import parts
+
+            spec_class = spec_class_of(type(self))
+            made = self.__dict__["_assembly"] = parts.robosuite_part(spec_class, self._robot_idn)
             for part, arm_name in self._added:
                 self._give(made, part, arm_name)
         return made
@@ -316,12 +317,12 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         elif inspect.getattr_static(type(part), "assembler_class", None) is None:
             self.assembly  # noqa: B018 (made now, given every part added so far, this one too)
 
-    def _give(self, assembly: ManipulatorModel, part: Any, arm_name: str | None) -> None:
+    def _give(self, assembly: models.ManipulatorModel, part: Any, arm_name: str | None) -> None:
         if isinstance(part, RobosuiteBase):
-            assembly.add_base(our_instance(REGISTERED_BASES, part))
+            assembly.add_base(our_instance(REGISTRIES["base"], part))
             return
         for index, arm in enumerate(self._arms_of(arm_name)):
-            ours = our_instance(REGISTERED_GRIPPERS, part, reuse=index == 0)  # one instance per hand
+            ours = our_instance(REGISTRIES["gripper"], part, reuse=index == 0)  # one instance per hand
             assembly.add_gripper(ours, arm=arm)
 
     def _groups(self, kind: str) -> list[list[str]]:
@@ -348,9 +349,9 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
         """Make our assembly the tree robosuite merges into the world, then compile it as robosuite does."""
         recorded = self._recorded()
         if recorded is not None and recorded["file"]:
-            MujocoXML.__init__(self, recorded_assembly_file(recorded["file"], lambda: self.assembly))
+            MujocoXML.__init__(self, recorded_assembly_file(recorded["file"], lambda: self.assembly, _world))
         else:
-            MujocoXML.__init__(self, assembly_file(self.assembly))
+            MujocoXML.__init__(self, _world_file(self.assembly))
         self._point_elements_at_tree()
         self.cameras = self.get_element_names(self.worldbody, "camera")
         super().set_mujoco_model(mujoco_model)
@@ -366,6 +367,21 @@ class SpecRobot(RobosuiteManipulator, metaclass=QuietMeta):  # type: ignore[misc
                 self._elements[key] = by_name.get((value.tag, value.get("name")), value)
 
 
+def _world(robot: models.RobotModel) -> mujoco.MjSpec:
+    """The robot's assembly, checked for robosuite's world (:func:`.parts.world_checked`), built only
+    when no file is kept for it."""
+    from assembler.robosuite import parts
+
+    return parts.world_checked(robot)
+
+
+def _world_file(robot: models.RobotModel) -> str:
+    """The file robosuite reads for ``robot`` with its base and grippers, the robot made now."""
+    from assembler.robosuite import parts
+
+    return parts.assembly_file(robot)
+
+
 def our_instance(registry: Registry[P], given: Any, reuse: bool = True) -> P:
     """Our part for ``given`` (a robosuite gripper or base object): when it is one of
     ours, the very part whose model file robosuite read (its XML is read once; ``reuse``), else a new
@@ -374,7 +390,9 @@ def our_instance(registry: Registry[P], given: Any, reuse: bool = True) -> P:
         own = getattr(given, "part", None)
         if own is not None:
             return own  # type: ignore[no-any-return]
-    return robosuite_part(our_part(registry, given), given.idn)
+    from assembler.robosuite import parts  # robosuite gave a part that is not ours: ours is made now
+
+    return parts.robosuite_part(our_part(registry, given), given.idn)
 
 
 def our_part(registry: Registry[P], given: Any) -> type[P]:
@@ -393,7 +411,7 @@ def our_part(registry: Registry[P], given: Any) -> type[P]:
     return spec_class
 
 
-def robot_class(assembler_class: type[ManipulatorModel]) -> type[SpecRobot]:
+def robot_class(assembler_class: type[models.ManipulatorModel]) -> type[SpecRobot]:
     """The robosuite robot class of a spec robot (not yet in robosuite's registries)."""
     check_offsets(assembler_class)
     return robosuite_robot(assembler_class.spec.name, assembler_class.spec.arms, assembler_class)
@@ -412,7 +430,7 @@ def robosuite_robot(name: str, arms: Sequence[str], assembler_class: object) -> 
     return QuietMeta(name, (SpecRobot,), namespace)
 
 
-def check_offsets(assembler_class: type[ManipulatorModel]) -> None:
+def check_offsets(assembler_class: type[models.ManipulatorModel]) -> None:
     """Raise the spec's error when robosuite cannot read one of its ``base_xpos_offset`` arenas."""
     spec = assembler_class.spec
     problems = []

@@ -2,7 +2,8 @@
 
 Every command and API that takes a part by name or by file asks :func:`argument_kind`, so a spec
 file is recognised the same way everywhere (``assembler build``, ``load_model``, scenes, variants,
-``list``): by its suffix, or by being a file. A path too long for the file system is no file (it
+``list``): by its suffix, or by being a file; a folder's spec files are those with the suffix
+(:func:`spec_files`). A path too long for the file system is no file (it
 is then a name, and an unknown one gets the registry's own error). This module reads no spec and
 imports nothing heavy: the cached fast path of ``load_model`` asks it too.
 """
@@ -16,6 +17,12 @@ from assembler.files.paths import is_dir, is_file
 
 SPEC_SUFFIXES = (".yaml", ".yml")
 """A spec file's suffixes."""
+
+
+def spec_files(folder: Path) -> list[Path]:
+    """Every spec file below ``folder``, in a stable order."""
+    return sorted(p for p in folder.rglob("*") if p.suffix in SPEC_SUFFIXES and p.is_file())
+
 
 DEFAULT = "default"
 """As a base or gripper argument: the robot spec's default base or gripper."""

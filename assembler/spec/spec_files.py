@@ -27,7 +27,7 @@ from assembler.spec.documents import (
     validate,
 )
 from assembler.spec.fieldpath import FieldPath
-from assembler.spec.part_arguments import SPEC_SUFFIXES
+from assembler.spec.part_arguments import spec_files
 from assembler.spec.schema import SPEC_KINDS, MotorSpec, PartSpec
 
 __all__ = [
@@ -50,11 +50,6 @@ def _validate(document: LocatedDocument) -> LoadedSpec[PartSpec]:
             document.problem(KIND, f"unknown spec kind '{kind}'; use one of {', '.join(SPEC_KINDS)}")
         )
     return validate(document, SPEC_KINDS[kind])
-
-
-def spec_files(folder: Path) -> list[Path]:
-    """Every spec file below ``folder``, in a stable order."""
-    return sorted(p for p in folder.rglob("*") if p.suffix in SPEC_SUFFIXES and p.is_file())
 
 
 def load_documents(

@@ -15,11 +15,11 @@ from assembler.models.groups import robosuite_group
 from assembler.models.joint_rules import matching_joints
 from assembler.models.part import FloatArray, PartModel
 from assembler.models.preparation import PreparedPart
-from assembler.models.registering import Registry
+from assembler.models.registering import REGISTRIES, Registry
 from assembler.spec.fieldpath import FieldPath
 from assembler.spec.schema import BaseSpec
 
-REGISTERED_BASES: Registry[RobotBaseModel] = Registry("base")
+REGISTERED_BASES: Registry[RobotBaseModel] = REGISTRIES["base"]
 """Every registered base class by name."""
 
 

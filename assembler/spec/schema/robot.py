@@ -7,13 +7,13 @@ from typing import Annotated, Any, Literal
 from pydantic import Field, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError
 
-from assembler.spec.schema.common import FiniteFloat, NonNegativeFloat, StrictModel, Vec3, Vec4
-from assembler.spec.schema.expressions import (
+from assembler.spec.expressions import (
     OFFSET_VARIABLES,
     ExpressionError,
     evaluate_expression,
     parse_expression,
 )
+from assembler.spec.schema.common import FiniteFloat, NonNegativeFloat, StrictModel, Vec3, Vec4
 from assembler.spec.schema.joints import JointDefaults
 from assembler.spec.schema.mjlab import MjlabOptions
 from assembler.spec.schema.parts import Name, PartSpec
