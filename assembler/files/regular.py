@@ -7,7 +7,8 @@ empty spec), and a folder is no file. So every reader opens through :func:`open_
 never blocks, checks the open file itself (no race with a swap after a check) and raises
 :class:`NotARegularFile`, an :class:`OSError` whose ``strerror`` says what the path is, e.g.
 ``it is a FIFO (named pipe), not a regular file``; readers print ``strerror`` as they would for a
-missing file.
+missing file. A file from a stranger is read with a limit (:func:`read_bounded`): at most one byte
+more than its reader allows, so a file of any size costs no more than the limit.
 """
 
 from __future__ import annotations
@@ -69,3 +70,21 @@ def read_regular(path: str | os.PathLike[str]) -> bytes:
     of known, bounded size such as the cache's own."""
     with open_regular(path) as stream:
         return stream.read()
+
+
+class FileTooLarge(OSError):
+    """The regular file holds more bytes than its reader allows (``limit``)."""
+
+    def __init__(self, path: str | os.PathLike[str], limit: int) -> None:
+        super().__init__(errno.EFBIG, f"the file's size exceeds the limit of {limit} bytes", os.fspath(path))
+        self.limit = limit
+
+
+def read_bounded(path: str | os.PathLike[str], limit: int) -> bytes:
+    """The content of the regular file ``path`` (:func:`open_regular`'s refusals), at most ``limit``
+    bytes: :class:`FileTooLarge` when it holds more (only ``limit + 1`` bytes are read to know)."""
+    with open_regular(path) as stream:
+        data = stream.read(limit + 1)
+    if len(data) > limit:
+        raise FileTooLarge(path, limit)
+    return data

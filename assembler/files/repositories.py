@@ -33,7 +33,7 @@ from typing import Any
 from assembler.errors import SpecError, did_you_mean
 from assembler.files.limits import MAX_SPEC_BYTES
 from assembler.files.plain_xml import parse_plain_xml
-from assembler.files.regular import open_regular
+from assembler.files.regular import FileTooLarge, read_bounded
 
 TOML_MODULE = "tomllib" if sys.version_info >= (3, 11) else "tomli"
 """Imported on the first declaration read (~4 ms): a cached answer imports this module through
@@ -114,13 +114,11 @@ def _parsed(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
 def _bounded_bytes(path: Path) -> bytes:
     """A declaration's file (TOML, a package.xml), read with the spec-file size limit."""
     try:
-        with open_regular(path) as stream:
-            data = stream.read(MAX_SPEC_BYTES + 1)
+        return read_bounded(path, MAX_SPEC_BYTES)
+    except FileTooLarge:
+        raise SpecError(f"{_shown(path)}: larger than the limit of {MAX_SPEC_BYTES} bytes") from None
     except OSError as error:
         raise SpecError(f"{_shown(path)}: cannot read it ({error.strerror or error})") from None
-    if len(data) > MAX_SPEC_BYTES:
-        raise SpecError(f"{_shown(path)}: larger than the limit of {MAX_SPEC_BYTES} bytes")
-    return data
 
 
 def _read(path: Path) -> dict[str, Any]:

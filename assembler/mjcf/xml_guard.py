@@ -71,7 +71,7 @@ from assembler.errors import MjcfError
 from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_MJCF_BYTES, MAX_MJCF_INCLUDE_DEPTH
 from assembler.files.paths import confine, display_path
-from assembler.files.regular import not_regular, open_regular
+from assembler.files.regular import FileTooLarge, not_regular, read_bounded
 from assembler.mjcf import installed_mujoco
 
 FILE_ELEMENTS: tuple[str, ...] = ("include", "model", "flexcomp")
@@ -128,12 +128,11 @@ class _Refused(Exception):
 def _read(path: Path) -> bytes:
     shown = display_path(path)
     try:
-        with open_regular(path) as stream:
-            data = stream.read(MAX_MJCF_BYTES + 1)
+        data = read_bounded(path, MAX_MJCF_BYTES)
+    except FileTooLarge as error:
+        raise MjcfError(f"{shown}: {error.strerror} for MJCF") from None
     except OSError as error:
         raise MjcfError(f"{shown}: cannot read the file: {error.strerror}") from None
-    if len(data) > MAX_MJCF_BYTES:
-        raise MjcfError(f"{shown}: the file's size exceeds the limit of {MAX_MJCF_BYTES} bytes for MJCF")
     note_inputs([path])  # an MJCF, an included file or a URDF: no output may replace it
     return data
 

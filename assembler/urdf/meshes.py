@@ -38,7 +38,7 @@ from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_DAE_BYTES
 from assembler.files.paths import confine, display_path
 from assembler.files.plain_xml import check_plain_xml
-from assembler.files.regular import open_regular
+from assembler.files.regular import FileTooLarge, read_bounded
 
 READABLE_SUFFIXES: frozenset[str] = frozenset({".stl", ".obj", ".msh"})
 """Mesh formats MuJoCo reads itself."""
@@ -103,16 +103,13 @@ def needs_conversion(path: Path) -> bool:
 def _read_dae(source: Path) -> bytes:
     """The COLLADA file's bytes, read once and bounded; an archive or a DTD is refused."""
     try:
-        with open_regular(source) as stream:
-            data = stream.read(MAX_DAE_BYTES + 1)
+        data = read_bounded(source, MAX_DAE_BYTES)
+    except FileTooLarge as error:
+        raise MeshConversionError(f"{display_path(source)}: {error.strerror} for a mesh") from None
     except OSError as error:
         raise MeshConversionError(
             f"{display_path(source)}: cannot read it ({error.strerror or error})"
         ) from None
-    if len(data) > MAX_DAE_BYTES:
-        raise MeshConversionError(
-            f"{display_path(source)}: the file's size exceeds the limit of {MAX_DAE_BYTES} bytes for a mesh"
-        )
     if data.startswith(ARCHIVE_MAGIC):
         raise MeshConversionError(
             f"{display_path(source)}: an archive, not a COLLADA file; a mesh is {ALLOWED_FORMATS}"

@@ -20,7 +20,7 @@ import yaml
 from assembler.errors import Location, Problem, SpecError
 from assembler.files.inputs import note_inputs
 from assembler.files.limits import MAX_SPEC_BYTES, MAX_YAML_DEPTH, MAX_YAML_ITEMS, MAX_YAML_VALUES
-from assembler.files.regular import open_regular
+from assembler.files.regular import FileTooLarge, read_bounded
 from assembler.spec.documents.located import LocatedDocument
 from assembler.spec.fieldpath import TOP, FieldPath
 
@@ -197,18 +197,12 @@ def read_yaml_text(path: Path, shown: str) -> str:
     """A YAML file's text: at most :data:`MAX_SPEC_BYTES` read, UTF-8 with or without a BOM; the file
     is noted as an input, which no output of this process may replace (:mod:`assembler.files.inputs`)."""
     try:
-        with open_regular(path) as stream:  # a FIFO or a device is refused, never waited on
-            raw = stream.read(MAX_SPEC_BYTES + 1)
+        raw = read_bounded(path, MAX_SPEC_BYTES)  # a FIFO or a device is refused, never waited on
+    except FileTooLarge as error:
+        raise SpecError(Problem(f"{error.strerror} for a spec file", Location(shown))) from None
     except OSError as error:
         raise SpecError(Problem(f"cannot read the file: {error.strerror}", Location(shown))) from None
     note_inputs([path])
-    if len(raw) > MAX_SPEC_BYTES:
-        raise SpecError(
-            Problem(
-                f"the file's size exceeds the limit of {MAX_SPEC_BYTES} bytes for a spec file",
-                Location(shown),
-            )
-        )
     try:
         return raw.decode("utf-8-sig")  # a byte-order mark is harmless; strip it
     except UnicodeDecodeError as error:
