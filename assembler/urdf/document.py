@@ -5,7 +5,7 @@ discards visual geoms and fuses bodies without joints into their parents (a fixe
 vanishes into the world) unless told otherwise. So before MuJoCo sees the text we:
 
 - replace each mesh ``filename`` by the absolute path of a file it can read (see
-  :mod:`assembler.urdf.packages` and :mod:`assembler.urdf.meshes`), each confined to its home;
+  :mod:`assembler.urdf.packages` and :mod:`assembler.urdf.mesh_formats`), each confined to its home;
 - set ``<mujoco><compiler discardvisual="false" fusestatic="false" strippath="false"/></mujoco>``
   (MuJoCo's URDF extension element), keeping any other compiler setting the URDF gives;
 - record what MuJoCo does not carry over: joint velocity limits, ``<mimic>`` couplings, which
@@ -26,7 +26,7 @@ from assembler.files.paths import confine, display_path, is_file
 from assembler.files.regular import not_regular
 from assembler.mjcf.source import GLOBAL_SECTIONS
 from assembler.mjcf.xml_guard import non_finite_values
-from assembler.urdf.meshes import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
+from assembler.urdf.mesh_formats import MeshConversionError, check_mesh_format, readable_mesh, renamed_copy
 from assembler.urdf.outline import outline
 from assembler.urdf.packages import find_package_file, not_found_message, split_package_uri
 
@@ -65,7 +65,7 @@ class UrdfDocument:
     mesh_files: list[Path] = field(default_factory=list)
     """Every mesh file read (originals, before conversion) and every converted or renamed copy."""
     renamed: list[Path] = field(default_factory=list)
-    """Copies of mesh files whose stem another mesh file of the URDF has (see assembler.urdf.meshes)."""
+    """Copies of mesh files whose stem another mesh file of the URDF has (see assembler.urdf.mesh_formats)."""
     homes: set[Path] = field(default_factory=set)
     """Folders the meshes were admitted from (package folders found for package:// URIs)."""
     velocity_limits: dict[str, float] = field(default_factory=dict)

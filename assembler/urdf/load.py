@@ -34,7 +34,7 @@ from assembler.mjcf.joints import Authored
 from assembler.mjcf.source import GLOBAL_SECTIONS, MjcfSource, name_mesh_content_types
 from assembler.mjcf.xml_guard import check_mjcf
 from assembler.urdf.document import FORCED_COMPILER, Mimic, UrdfDocument, read_urdf
-from assembler.urdf.meshes import converted_dir
+from assembler.urdf.mesh_formats import converted_dir
 from assembler.urdf.packages import find_package_file, not_found_message, resolution_state, split_package_uri
 from assembler.urdf.postprocess import (
     add_mimics,

@@ -31,7 +31,7 @@ from assembler.cli import main
 from assembler.compiler import service
 from assembler.compiler.service import wait_for_writes
 from assembler.robosuite.files import kept_file, written_file
-from assembler.urdf.meshes import converted_dir, importable
+from assembler.urdf.mesh_formats import converted_dir, importable
 from assembler.urdf.packages import package_folders
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package, write_stl

@@ -18,7 +18,7 @@ import pytest
 import assembler
 from assembler.compiler import service
 from assembler.compiler.service import wait_for_writes
-from assembler.urdf.meshes import converted_dir, converter_available, importable
+from assembler.urdf.mesh_formats import converted_dir, converter_available, importable
 from tests.conftest import MESH_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package, write_stl
 

@@ -53,7 +53,7 @@ MESH_STEMS = (
     "MuJoCo 3.9's URDF import names a mesh after its file's stem and gives a later <mesh filename> of a stem "
     "already taken the first file's mesh, whatever its folder (xml_urdf.cc, mjXURDF::Geom: same name and "
     "scale, one mesh); MuJoCo 4.0's import loads it as a mesh of its own (<stem>1), and our read hands MuJoCo "
-    "such a file as a copy of its own name on every version (assembler/urdf/meshes.py)"
+    "such a file as a copy of its own name on every version (assembler/urdf/mesh_formats.py)"
 )
 
 ON_MUJOCO_3_9 = {

@@ -23,7 +23,7 @@ from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
 from assembler.errors import AssemblerError
 from assembler.files.inputs import input_at, note_inputs
-from assembler.urdf.meshes import importable
+from assembler.urdf.mesh_formats import importable
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
 
@@ -179,7 +179,7 @@ def test_a_bundle_never_writes_over_an_input_through_a_link(
 WRITERS_OF_THEIR_OWN = {
     "assembler/files/writing.py": "the door",
     "assembler/cli/endings.py": "opens os.devnull for the process's streams",
-    "assembler/urdf/meshes.py": "fills the cache's temporary file of a converted mesh (cache/content.kept_file)",
+    "assembler/urdf/mesh_formats.py": "fills the cache's temporary file of a converted mesh (cache/content.kept_file)",
 }
 """Modules under ``assembler/cache/`` write inside the cache folder, which is theirs."""
 

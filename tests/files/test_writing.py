@@ -19,7 +19,7 @@ import pytest
 
 from assembler.cli import main
 from assembler.compiler.service import wait_for_writes
-from assembler.urdf.meshes import importable
+from assembler.urdf.mesh_formats import importable
 from tests.conftest import INCLUDING_ARM_MJCF, TETRAHEDRON_OBJ, use_private_cache
 from tests.urdf.fixtures import ARM_URDF, write_package
 

@@ -16,10 +16,10 @@ from pathlib import Path
 import mujoco
 import pytest
 
-import assembler.urdf.meshes
+import assembler.urdf.mesh_formats
 from assembler.cli import main
 from assembler.files.limits import MAX_URDF_DEPTH, MAX_URDF_LINKS
-from assembler.urdf.meshes import converter_available, importable
+from assembler.urdf.mesh_formats import converter_available, importable
 from tests.urdf.fixtures import dae_text, write_dae
 
 INERTIAL = '<inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>'
@@ -260,7 +260,7 @@ def test_a_dae_larger_than_the_limit_is_one_line_and_never_reaches_trimesh(
 ) -> None:
     lab = _lab(tmp_path, mesh("meshes/arm.dae"), {}, "")
     size = write_dae(lab / "specs" / "meshes" / "arm.dae").stat().st_size
-    monkeypatch.setattr(assembler.urdf.meshes, "MAX_DAE_BYTES", size - 1)  # 64 MiB is too much to write
+    monkeypatch.setattr(assembler.urdf.mesh_formats, "MAX_DAE_BYTES", size - 1)  # 64 MiB is too much to write
     monkeypatch.chdir(lab)
     assert main(["validate", "--compile", "specs/arm.yaml"]) == 1
     assert capsys.readouterr().err.splitlines() == [

@@ -20,7 +20,7 @@ from assembler.cli import main
 from assembler.urdf.packages import package_folders
 
 pytestmark = pytest.mark.skipif(
-    not package_folders("example-robot-data") or not assembler.urdf.meshes.converter_available(),
+    not package_folders("example-robot-data") or not assembler.urdf.mesh_formats.converter_available(),
     reason='example-robot-data or trimesh not installed: pip install "robot-assembler[urdf]"',
 )
 

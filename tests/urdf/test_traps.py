@@ -23,7 +23,7 @@ from assembler.files.paths import allowing, shipped_specs_dir
 from assembler.models import RobotModel
 from assembler.urdf import load_urdf
 from assembler.urdf.document import read_urdf
-from assembler.urdf.meshes import converted_dir, converter_available, importable
+from assembler.urdf.mesh_formats import converted_dir, converter_available, importable
 from assembler.urdf.packages import package_folders
 from assembler.urdf.postprocess import add_mimics
 from tests.urdf.fixtures import ARM_URDF, line_of, write_package, write_stl
