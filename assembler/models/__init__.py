@@ -69,7 +69,13 @@ __all__ = sorted(_SOURCES)
 def __getattr__(name: str) -> Any:
     if name not in _SOURCES:
         raise AttributeError(f"module 'assembler.models' has no attribute '{name}'")
-    value = getattr(importlib.import_module(_SOURCES[name]), name)
+    try:
+        module = importlib.import_module(_SOURCES[name])
+    except AttributeError as error:
+        # Raised while importing (MuJoCo starting an OpenGL backend that cannot load): passed on as
+        # is, `from assembler.models import X` would report "cannot import name X" instead.
+        raise ImportError(str(error)).with_traceback(error.__traceback__) from error
+    value = getattr(module, name)
     globals()[name] = value
     return value
 
