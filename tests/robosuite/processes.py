@@ -18,6 +18,22 @@ VARIABLES = ("ASSEMBLER_ROBOSUITE_SPECS", "ASSEMBLER_ROBOSUITE_EXPERIMENT")
 RESULT = "RESULT "
 
 
+LIFT_STEPPED = """
+def lift_stepped(robot):
+    \"\"\"robosuite's Lift with ``robot``, reset, then 10 steps of one action: the environment and its
+    last observations, rounded to 9 digits (the seed places the cube).\"\"\"
+    env = robosuite.make("Lift", robots=robot, has_renderer=False, has_offscreen_renderer=False,
+                         use_camera_obs=False, seed=0)
+    env.reset()
+    action = np.full(env.action_dim, 0.1)
+    for _ in range(10):
+        obs, _, _, _ = env.step(action)
+    return env, {key: np.asarray(value).round(9).tolist() for key, value in sorted(obs.items())}
+"""
+"""A script's function (it needs ``numpy as np`` and ``robosuite`` imported) that makes and steps Lift
+the same way in every process whose observations a test compares."""
+
+
 def environment(**variables: str) -> dict[str, str]:
     environment = {key: value for key, value in os.environ.items() if key not in VARIABLES}
     paths = [str(ROOT), *filter(None, environment.get("PYTHONPATH", "").split(os.pathsep))]

@@ -14,9 +14,11 @@ import pytest
 
 pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
 
-from tests.robosuite.processes import result  # noqa: E402
+from tests.robosuite.processes import LIFT_STEPPED, result  # noqa: E402
 
-REGISTER_AND_RUN = """
+REGISTER_AND_RUN = (
+    LIFT_STEPPED
+    + """
 import json, sys
 import numpy as np
 import robosuite
@@ -39,16 +41,11 @@ tables = {
 }
 observed = {}
 for robot in ("Panda", "Sparrow7"):
-    env = robosuite.make("Lift", robots=robot, has_renderer=False, has_offscreen_renderer=False,
-                         use_camera_obs=False, seed=0)  # the seed places the cube
-    env.reset()
-    action = np.full(env.action_dim, 0.1)
-    for _ in range(10):
-        obs, _, _, _ = env.step(action)
-    observed[robot] = {key: np.asarray(value).round(9).tolist() for key, value in sorted(obs.items())}
+    env, observed[robot] = lift_stepped(robot)
     env.close()
 print("RESULT " + json.dumps({"replaced": replaced, "unread": unread, "tables": tables, "observed": observed}))
 """
+)
 
 
 def _run(cwd: Path, cache: Path | None) -> Any:

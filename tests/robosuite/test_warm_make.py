@@ -15,9 +15,11 @@ import pytest
 
 pytest.importorskip("robosuite", reason='needs robosuite: pip install ".[test,robosuite]"')
 
-from tests.robosuite.processes import result  # noqa: E402
+from tests.robosuite.processes import LIFT_STEPPED, result  # noqa: E402
 
-MAKE_AND_STEP = """
+MAKE_AND_STEP = (
+    LIFT_STEPPED
+    + """
 import json, sys
 import numpy as np
 import assembler.robosuite
@@ -27,17 +29,12 @@ from assembler.models import REGISTRIES
 assembler.robosuite.replace_robosuite()
 observed, unread = {}, {}
 for robot in ("Panda", "Sparrow7"):
-    env = robosuite.make("Lift", robots=robot, has_renderer=False, has_offscreen_renderer=False,
-                         use_camera_obs=False, seed=0)  # the seed places the cube
-    env.reset()
-    action = np.full(env.action_dim, 0.1)
-    for _ in range(10):
-        obs, _, _, _ = env.step(action)
-    observed[robot] = {key: np.asarray(value).round(9).tolist() for key, value in sorted(obs.items())}
+    env, observed[robot] = lift_stepped(robot)
     unread[robot] = sorted(f"{family}:{name}" for family, table in REGISTRIES.items() for name in table.held_names())
-    if robot == "Panda":  # before anything asks for our part itself
+    if robot == "Panda":
+        # what is imported before anything asks for our part itself
         schema = sorted(name for name in sys.modules if name == "pydantic" or name.startswith("assembler.spec.schema"))
-    if robot == "Panda":  # anything not recorded is our part itself: made now, with its base and gripper
+        # anything not recorded is our part itself: made now, with its base and gripper
         model = env.robots[0].robot_model
         gripper = env.robots[0].gripper["right"]
         made = {
@@ -51,6 +48,7 @@ for robot in ("Panda", "Sparrow7"):
     env.close()
 print("RESULT " + json.dumps({"observed": observed, "unread": unread, "made": made, "schema": schema}))
 """
+)
 
 PANDAS = {"robot:Panda", "gripper:PandaGripper", "base:RethinkMount"}
 """What Lift with Panda is made of (robosuite's names, our specs replacing them)."""
